@@ -1,0 +1,100 @@
+"""Display helpers the chapters share: one setup call, equations as typeset math, status tables.
+
+Everything shown is rounded and free of addresses or timings, so nbval can compare it exactly.
+"""
+from __future__ import annotations
+
+import warnings
+
+import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
+from IPython.display import Markdown, Math, display
+from matplotlib.ticker import EngFormatter
+
+from .registry import Equation, UNIT_SCALES
+
+#: status -> short badge used in tables
+BADGE = {"exact": "exact", "rounding": "rounding", "misprint": "**misprint**",
+         "inconsistent": "**inconsistent**", "n/a": "n/a"}
+
+
+def setup() -> None:
+    """The one setup call of every chapter: quiet warnings, deterministic plots."""
+    warnings.filterwarnings("ignore", category=DeprecationWarning)
+    warnings.filterwarnings("ignore", category=FutureWarning)
+    np.set_printoptions(precision=4, suppress=True)
+    matplotlib.rcParams.update({
+        "figure.figsize": (7.0, 3.8), "figure.dpi": 100, "axes.grid": True, "grid.alpha": 0.3,
+        "svg.hashsalt": "handbook", "axes.spines.top": False, "axes.spines.right": False,
+    })
+
+
+def eng(value: float, unit: str = "", digits: int = 4) -> str:
+    """An SI value to ``digits`` significant figures with a prefix: eng(1.455e-8, 'F') -> '14.55 nF'."""
+    value = float(f"{float(value):.{digits}g}")
+    if unit in ("1", ""):
+        return f"{value:g}"
+    if unit == "%":
+        return f"{value * 100:g} %"
+    return EngFormatter(unit=unit, places=None, sep=" ")(value)
+
+
+def _unit_of(unit: str) -> str:
+    return {"ohm": "Ω", "1": "", "F*rpm": "F·rpm", "1/K": "/K"}.get(unit, unit)
+
+
+def show_equation(eq: Equation) -> None:
+    """Printed form, derived form, and the verdict of the symbolic check."""
+    s = eq.summary()
+    display(Markdown(f"**{eq.title}** ({eq.source})  \nprinted:"))
+    display(Math(s["printed_latex"]))
+    display(Markdown(f"derived ({eq.law}):"))
+    display(Math(s["derived_latex"]))
+    dims = "dimensions consistent" if s["dimensions_ok"] else "**dimension error**"
+    verdict = "agrees" if s["agrees"] else "**differs**"
+    display(Markdown(f"*Check:* {verdict}; {dims}. {s['note']}"))
+
+
+def show_equations(eqs, chapter: str) -> None:
+    for e in eqs:
+        if e.chapter == chapter:
+            show_equation(e)
+
+
+def examples_table(rows: list[dict]) -> Markdown:
+    """The status table of a chapter: printed, recomputed, status, why."""
+    lines = ["| quantity | printed | recomputed | status | why |", "|---|---|---|---|---|"]
+    for r in rows:
+        printed_unit = r["printed_text"].split(" ", 1)[1]
+        scale = UNIT_SCALES[printed_unit][0]
+        suffix = "" if printed_unit == "1" else " " + printed_unit
+        printed = r["printed_text"].split(" ", 1)[0] + suffix
+        shown = f"{r['computed'] / scale:.4g}{suffix}"
+        lines.append(f"| {r['quantity']} | {printed} | {shown} | {BADGE[r['status']]} | {r['reason']} |")
+    return Markdown("\n".join(lines))
+
+
+def table(header: list[str], rows: list[list]) -> Markdown:
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return Markdown("\n".join(lines))
+
+
+def glue_all(**values) -> None:
+    """Glue numbers for the prose (myst-nb), as plain Python floats so their repr is stable."""
+    from myst_nb import glue
+
+    for name, v in values.items():
+        glue(name, float(v) if isinstance(v, (int, float, np.floating, np.integer)) else v, display=False)
+
+
+def axes(xlabel: str, ylabel: str, xunit: str = "", yunit: str = ""):
+    fig, ax = plt.subplots()
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    if xunit:
+        ax.xaxis.set_major_formatter(EngFormatter(unit=xunit))
+    if yunit:
+        ax.yaxis.set_major_formatter(EngFormatter(unit=yunit))
+    return fig, ax

@@ -1,0 +1,60 @@
+"""``python -m handbook``: the command-line face of the handbook's registries."""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from . import catalog
+
+
+def _table(rows: list[dict], cols: list[tuple[str, str, int]]) -> str:
+    out = ["  ".join(title.ljust(w) for _, title, w in cols).rstrip()]
+    out.append("  ".join("-" * w for _, _, w in cols))
+    for r in rows:
+        cells = []
+        for key, _, w in cols:
+            v = r[key]
+            v = f"{v:.6g}" if isinstance(v, float) else str(v)
+            cells.append(v[:w].ljust(w))
+        out.append("  ".join(cells).rstrip())
+    return "\n".join(out)
+
+
+def cmd_examples(args) -> int:
+    rows = catalog.examples()
+    if args.json:
+        keys = ("id", "source", "quantity", "unit", "printed", "computed", "status", "reason", "relation", "basis")
+        print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
+    else:
+        print(_table(rows, [("id", "id", 26), ("printed_text", "printed", 12), ("computed", "computed (SI)", 13),
+                            ("unit", "unit", 6), ("status", "status", 12), ("reason", "reason", 90)]))
+    return 0
+
+
+def cmd_equations(args) -> int:
+    rows = [e.summary() for e in catalog.equations()]
+    if args.json:
+        keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "dimensions_ok", "law", "note")
+        print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
+    else:
+        print(_table(rows, [("id", "id", 24), ("source", "source", 34), ("agrees", "agrees", 6),
+                            ("dimensions_ok", "dims", 5), ("note", "note", 100)]))
+    return 0
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m handbook", description=__doc__)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("examples", help="every numeric example: printed, recomputed, status")
+    p.add_argument("--json", action="store_true", help="a JSON list; values in SI base units")
+    p.set_defaults(func=cmd_examples)
+    p = sub.add_parser("equations", help="every equation: printed and derived forms, agreement")
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=cmd_equations)
+    args = parser.parse_args(argv)
+    return args.func(args)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

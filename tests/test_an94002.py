@@ -1,0 +1,243 @@
+"""AN94002: every equation's check, and every example against numbers worked out independently here."""
+import itertools
+import math
+
+import numpy as np
+import pytest
+
+from handbook import an94002 as note
+from handbook.validate import InputError
+
+EQS = {e.id: e for e in note.equations()}
+EXAMPLES = {r["id"]: r for r in note.examples()}
+
+
+# ---------------------------------------------------------------------------------------------
+# equations
+
+EXPECTED_DIFFERENT = {
+    "an94002-eq6": 56 / 55,  # 160 against 10 x 22 uA / 1.4 V = 157.14
+    "an94002-eq9b": 0.9994,  # 2.63 against 5 / 1.9
+    "an94002-eq11-num": None,  # 2.02 and 0.741 rounded: differs by a small affine term
+}
+
+
+@pytest.mark.parametrize("eq_id", sorted(EQS))
+def test_equation_printed_against_derived(eq_id):
+    c = EQS[eq_id].check()
+    assert c.dims_ok, c.dims_note
+    if eq_id in EXPECTED_DIFFERENT:
+        assert not c.agrees
+        if EXPECTED_DIFFERENT[eq_id] is not None:
+            assert float(c.factor) == pytest.approx(EXPECTED_DIFFERENT[eq_id], rel=1e-12)
+    else:
+        assert c.agrees, EQS[eq_id].summary()["note"]
+
+
+def test_every_numbered_equation_of_the_note_is_registered():
+    numbered = {e.source.split("eq (")[1].split(")")[0] for e in EQS.values() if "eq (" in e.source}
+    assert numbered >= {str(i) for i in range(1, 15)}
+
+
+def test_eq2_ocr_text_is_dimensionally_wrong_and_the_reconstruction_right():
+    eq = EQS["an94002-eq2"]
+    assert eq.ocr_dims_ok() is False
+    assert eq.check().dims_ok and eq.reconstructed
+
+
+def test_eq11_numeric_form_differs_only_by_rounding():
+    eq = EQS["an94002-eq11-num"]
+    diff = eq.check().difference
+    vcs = [s for s in diff.free_symbols if "cs" in s.name][0]
+    # printed - derived = (0.741 - 16/21.6) V_cs ... tiny coefficients: rounding of 2.0196 and 0.74074
+    assert abs(float(diff.subs(vcs, 0))) == pytest.approx(2.02 - 7.79 * 5.6 / 21.6, abs=1e-12)
+    assert abs(float(diff.coeff(vcs))) == pytest.approx(abs(0.741 - 16 / 21.6), rel=1e-9)
+
+
+def test_derived_trip_point_matches_a_hand_solution_of_the_two_dividers():
+    # independent: solve the two KCL equations numerically for one set of values
+    vs, vd1, r9, r10, r11, r12, r13 = 12.0, 8.0, 300.0, 5.5e3, 16.5e3, 5.7e3, 15.8e3
+    ref = vs - vd1 + vd1 * r11 / (r9 + r10 + r11)
+    # V+ = ref: (vs - vcs - ref)/r12 = (ref - (vs - vd1))/r13
+    vcs = vs - ref - r12 * (ref - (vs - vd1)) / r13
+    eq = EQS["an94002-eq13"]
+    sub = {s: v for s in eq.derived.free_symbols for name, v in
+           (("V_{D1}", vd1), ("R_9", r9), ("R_{10}", r10), ("R_{11}", r11), ("R_{12}", r12), ("R_{13}", r13))
+           if s.name == name}
+    assert float(eq.derived.subs(sub)) == pytest.approx(vcs, rel=1e-12)
+    assert note.v_cs_trip(vd1, r9, r10, r11, r12, r13) == pytest.approx(vcs, rel=1e-12)
+
+
+# ---------------------------------------------------------------------------------------------
+# examples: recomputed values against numbers worked out here by hand
+
+HAND = {
+    "an94002-fosc": math.sqrt(25e-3 * 0.5 * 6 / 72e-6) / (2 * math.pi),
+    "an94002-tstart": 0.5,
+    "an94002-capst": 0.5 * 2e-6 / (2 * 2.15),
+    "an94002-capst-choice": 0.22e-6,
+    "an94002-capst-datasheet": 0.25e-6,
+    "an94002-window": 1.4,
+    "an94002-eq6-constant": 10 * 22e-6 / 1.4,
+    "an94002-capcd-bound": 22e-6 * (10 / (1800 * 6)) / 1.4,
+    "an94002-c3": 18e-9,
+    "an94002-c4": 18e-9,
+    "an94002-ich-max": 11e-6,
+    "an94002-eq9-constant": 5e-6 / 1.9,
+    "an94002-eq9-window": 1.9,
+    "an94002-vmot-max": 9.8,
+    "an94002-vin": 2.0,
+    "an94002-vmot-min": 1.7,
+    "an94002-vbe-tc": -0.0025,
+    "an94002-vbe": 0.70,
+    "an94002-offset-generic": 0.10,
+    "an94002-vd1-min": 7.79,
+    "an94002-factor-a": 16 / 21.6,
+    "an94002-a-vd1": 16 / 21.6 * 7.79,
+    "an94002-level-shift": 7.79 * 5.6 / 21.6,
+    "an94002-vcs-at-opamp": 0.1 * 16 / 21.6,
+    "an94002-window-high": 0.1 * 16 / 21.6 + 0.009,
+    "an94002-window-low": 0.1 * 16 / 21.6 - 0.009,
+    "an94002-offset-tol": 0.009 / (0.1 * 16 / 21.6),
+    "an94002-zener-tol": 0.05,
+    "an94002-zener-drift": 0.155,
+    "an94002-zener-drift-pct": 0.155 / 7.79,
+    "an94002-zener-tc": 0.0008 * 8.2,
+    "an94002-total-tol": 1.12 * 1.05 * 1.05 - 1,
+    "an94002-c2": 1 / (2 * math.pi * 2e6 * 2.0),
+    "an94002-r3": 39e3,
+    "an94002-r13": 16e3,
+    "an94002-c5": 220e-9,
+    "an94002-c6": 2e-9,
+}
+
+STATUS = {
+    "exact": {"an94002-tstart", "an94002-capst-choice", "an94002-window", "an94002-c3", "an94002-c4",
+              "an94002-eq9-window", "an94002-vmot-max", "an94002-vin", "an94002-vmot-min", "an94002-vbe-tc",
+              "an94002-offset-generic", "an94002-vd1-min", "an94002-zener-tol", "an94002-c2", "an94002-r3",
+              "an94002-r13", "an94002-c5", "an94002-c6"},
+    "rounding": {"an94002-fosc", "an94002-capst", "an94002-eq6-constant", "an94002-capcd-bound",
+                 "an94002-eq9-constant", "an94002-factor-a", "an94002-a-vd1", "an94002-level-shift",
+                 "an94002-vcs-at-opamp", "an94002-offset-tol", "an94002-zener-drift", "an94002-zener-drift-pct",
+                 "an94002-total-tol"},
+    "misprint": {"an94002-window-high", "an94002-window-low", "an94002-resistor-tol", "an94002-total-exact"},
+    "inconsistent": {"an94002-capst-datasheet", "an94002-ich-max", "an94002-vbe", "an94002-zener-tc"},
+}
+
+
+def test_more_than_twenty_examples_all_classified():
+    assert len(EXAMPLES) > 20
+    assert set(EXAMPLES) == set().union(*STATUS.values())
+
+
+@pytest.mark.parametrize("ex_id", sorted(HAND))
+def test_example_recomputed_value(ex_id):
+    assert EXAMPLES[ex_id]["computed"] == pytest.approx(HAND[ex_id], rel=1e-9)
+
+
+@pytest.mark.parametrize("status", sorted(STATUS))
+def test_example_statuses(status):
+    got = {k for k, r in EXAMPLES.items() if r["status"] == status}
+    assert got == STATUS[status]
+
+
+def test_a_deliberately_wrong_printed_value_is_flagged():
+    from handbook.registry import Printed
+
+    for ex in note.examples_list():
+        if ex.relation != "=":
+            continue
+        good = ex.evaluate(note.DEFAULTS, note.DEFAULTS)["computed"]
+        wrong = Printed(repr(good * 1.5 / __import__("handbook.registry").registry.UNIT_SCALES[ex.printed.unit][0]),
+                        ex.printed.unit)
+        ex.printed, saved = wrong, ex.printed
+        try:
+            r = ex.evaluate(note.DEFAULTS, note.DEFAULTS)
+        finally:
+            ex.printed = saved
+        assert r["status"] == ("misprint" if ex.basis == "note" else "inconsistent"), ex.id
+
+
+def test_changed_inputs_make_the_comparison_not_applicable():
+    rows = {r["id"]: r for r in note.examples(note.params(rpm_min=900.0))}
+    assert rows["an94002-capcd-bound"]["status"] == "n/a"
+    assert rows["an94002-capcd-bound"]["computed"] == pytest.approx(22e-6 * 10 / (900 * 6 * 1.4), rel=1e-12)
+    assert rows["an94002-fosc"]["status"] == "rounding"  # does not depend on rpm_min
+
+
+# ---------------------------------------------------------------------------------------------
+# the op-amp limiter's worst case, against a brute-force search done here
+
+def test_worst_case_corners_bound_a_dense_random_sample():
+    p = note.params()
+    wc = note.trip_worst_case(p)
+    rng = np.random.default_rng(1)
+    k = 200_000
+    r9 = note.r9_for(0.1, 8.2, 5.6e3, 16e3)
+
+    def vary(x, t):
+        return x * (1 + rng.uniform(-t, t, k))
+
+    r9_, r10, r11, r12, r13 = (vary(x, .01) for x in (r9, 5.6e3, 16e3, 5.6e3, 16e3))
+    a = r13 / (r12 + r13)
+    b = r11 / (r9_ + r10 + r11)
+    v = vary(8.2, .05) * (1 - b / a) - rng.uniform(-9e-3, 9e-3, k) / a
+    assert wc.low <= v.min() and v.max() <= wc.high
+    # and the corners are reached: brute force over the 2^7 corners written out here
+    vals = []
+    for s in itertools.product((-1, 1), repeat=7):
+        r9_, r10, r11, r12, r13 = (x * (1 + 0.01 * si) for x, si in zip((r9, 5.6e3, 16e3, 5.6e3, 16e3), s[:5]))
+        vd1, vos = 8.2 * (1 + 0.05 * s[5]), 9e-3 * s[6]
+        aa, bb = r13 / (r12 + r13), r11 / (r9_ + r10 + r11)
+        vals.append(vd1 * (1 - bb / aa) - vos / aa)
+    assert wc.low == pytest.approx(min(vals), rel=1e-12) and wc.high == pytest.approx(max(vals), rel=1e-12)
+    assert 1.0e-3 < wc.low < 1.5e-3 and 0.205 < wc.high < 0.208
+
+
+def test_cap_cd_choice_rejects_15nF_for_its_tolerance():
+    chosen, bound, rejected = note.choose_cap_cd(1800, 6, 22e-6, 1.4, 0.05, "E12")
+    assert chosen == pytest.approx(18e-9)
+    assert bound == pytest.approx(14.55e-9, rel=1e-3)
+    assert "not at -5%" in rejected[15e-9]
+    # with the datasheet's 11 uA charge current the bound halves and 8.2 nF suffices
+    assert note.choose_cap_cd(1800, 6, 11e-6, 1.4, 0.05, "E12")[0] == pytest.approx(8.2e-9)
+
+
+def test_speed_range_of_the_board_capacitor():
+    # 18 nF at -5 %: lowest speed with 22 uA over 1.4 V; at +5 % highest with 10.6 uA over 0.1 V
+    assert note.rpm_min_for(18e-9 * 0.95, 6, 22e-6, 1.4) == pytest.approx(10 * 22e-6 / (1.4 * 6 * 17.1e-9))
+    assert note.rpm_max_for(18e-9 * 1.05, 6, 10.6e-6, 0.1) == pytest.approx(10 * 10.6e-6 / (0.1 * 6 * 18.9e-9))
+    assert note.rpm_ratio(1.4, 0.1, 10.6e-6, 22e-6) == pytest.approx(14 * 10.6 / 22)
+
+
+def test_cap_ti_waveform_times():
+    t, v = note.cap_ti_waveform(10e-9, note.DEFAULTS)
+    assert t[1] == pytest.approx(10e-9 * 0.1 / 57e-6)
+    assert t[2] - t[1] == pytest.approx(3.8e-3)
+    assert t[3] - t[2] == pytest.approx(10e-9 * 2.0 / 28e-6)
+    assert list(v) == [0.2, 0.3, 2.2, 0.2]
+
+
+def test_12nc_codes_that_disagree_with_the_printed_values():
+    bad = {ref for ref, _, value, _, _, _, nc in note.PARTS
+           if value and note.decode_12nc(nc) is not None and abs(note.decode_12nc(nc) - value) > 1e-6 * value}
+    assert bad == {"R1", "R14", "C6"}
+
+
+# ---------------------------------------------------------------------------------------------
+# bad input
+
+@pytest.mark.parametrize("call,field", [
+    (lambda: note.t_com(1800, -2), "pole_pairs"),
+    (lambda: note.t_com(1800, 2.5), "pole_pairs"),
+    (lambda: note.t_com(0, 6), "rpm"),
+    (lambda: note.cap_cd_min(1800, 6, 22e-6, float("nan")), "window"),
+    (lambda: note.choose_cap_cd(1800, 6, 22e-6, 1.4, tolerance=1.5), "cap_tolerance"),
+    (lambda: note.start_period(1e-7, 2e-6, 2.2, 0.05), "v_st_low"),
+    (lambda: note.r9_for(9.0, 8.2, 5.6e3, 16e3), "v_cs"),
+    (lambda: note.params(rpm_mni=900), "rpm_min"),
+    (lambda: note.excursion(18e-9, np.array([1000.0, -5.0]), 6, 22e-6), "rpm"),
+])
+def test_bad_input_names_the_field(call, field):
+    with pytest.raises(InputError, match=field):
+        call()

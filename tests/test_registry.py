@@ -1,0 +1,95 @@
+"""The status logic, printed-number parsing, and the equation checks of the registry."""
+import math
+
+import pytest
+import sympy as sp
+from sympy.physics import units as u
+
+from handbook.registry import Equation, Printed, classify, latex
+
+
+@pytest.mark.parametrize("text,unit,si,half", [
+    ("160", "uF*rpm", 160e-6, 5e-6),  # trailing zero of an integer: not significant
+    ("0.0148", "uF", 1.48e-8, 0.5e-10),
+    ("5", "Hz", 5.0, 0.5),
+    ("-0.25", "%/K", -0.0025, 0.5e-4),
+    ("74.1", "mV", 0.0741, 0.5e-4),
+    ("2.02", "V", 2.02, 0.005),
+])
+def test_printed_parses_value_and_precision(text, unit, si, half):
+    p = Printed(text, unit)
+    assert p.si == pytest.approx(si, rel=1e-12)
+    assert p.half_unit == pytest.approx(half, rel=1e-12)
+
+
+def test_classify_exact_rounding_misprint():
+    assert classify(9.8, 0.05, 9.8) == "exact"
+    assert classify(5.0, 0.5, 5.1367) == "rounding"
+    assert classify(5.0, 0.5, 5.6) == "misprint"
+    # the boundary: half a unit is still rounding, a hair more is not
+    assert classify(150e-3, 5e-3, 155e-3) == "rounding"
+    assert classify(150e-3, 5e-3, 155.1e-3) == "misprint"
+
+
+def test_classify_names_the_basis_of_a_mismatch():
+    assert classify(22e-6, 0.5e-6, 11e-6, basis="TDA5144 datasheet") == "inconsistent"
+    assert classify(22e-6, 0.5e-6, 11e-6, basis="note") == "misprint"
+
+
+def test_classify_accepts_a_value_that_follows_from_the_notes_rounded_intermediate():
+    # 0.0148 uF is 160/(1800*6) although 22 uA and 1.4 V give 0.01455 uF directly
+    assert classify(1.48e-8, 0.5e-10, 1.455e-8) == "misprint"
+    assert classify(1.48e-8, 0.5e-10, 1.455e-8, via_rounded=160e-6 / 10800) == "rounding"
+
+
+def test_classify_bounds():
+    assert classify(10e-6, 0.5e-6, 39.8e-9, relation=">=") == "exact"
+    assert classify(10e-9, 0.5e-9, 39.8e-9, relation=">=") == "misprint"
+    assert classify(1.0, 0.05, 2.0, relation="<=") == "exact"
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf])
+def test_classify_refuses_non_finite(bad):
+    with pytest.raises(ValueError, match="finite"):
+        classify(bad, 0.1, 1.0)
+
+
+def _divider_equation(printed, lhs_scale=None, scales=None):
+    vin, r1, r2, vout = sp.symbols("V_in R_1 R_2 V_out", positive=True)
+    return Equation(
+        id="t", source="test", title="divider", lhs=vout, lhs_unit=u.volt,
+        printed=printed(vin, r1, r2), derived=vin * r2 / (r1 + r2),
+        units={vin: u.volt, r1: u.ohm, r2: u.ohm}, law="KCL", lhs_scale=lhs_scale, scales=scales or {})
+
+
+def test_equation_check_identical_constant_and_structural():
+    same = _divider_equation(lambda v, a, b: v / (1 + a / b)).check()
+    assert same.agrees and same.relation == "identical" and same.dims_ok
+    scaled = _divider_equation(lambda v, a, b: sp.Rational(101, 100) * v * b / (a + b)).check()
+    assert not scaled.agrees and scaled.relation == "constant factor" and scaled.factor == sp.Rational(101, 100)
+    wrong = _divider_equation(lambda v, a, b: v * a / (a + b)).check()
+    assert not wrong.agrees and wrong.relation == "differs"
+
+
+def test_equation_check_finds_a_dimension_error():
+    bad = _divider_equation(lambda v, a, b: v * b).check()  # volt x ohm is not a voltage
+    assert not bad.dims_ok
+
+
+def test_hidden_unit_constant_is_made_explicit():
+    # t [s] = 2.15 x C [uF] for 2 uA over 2.15 V twice: agrees only once the uF is explicit
+    c, c_uf, t, i, dv = sp.symbols("C C_uF t I dV", positive=True)
+    uF = u.farad / 10 ** 6
+    eq = Equation(id="t", source="test", title="timer", lhs=t, lhs_unit=u.second, lhs_scale=u.second,
+                  printed=sp.Rational("2.15") * c_uf, scales={c_uf: c / uF}, derived=2 * c * dv / i,
+                  units={c: u.farad, i: u.ampere, dv: u.volt},
+                  values={i: 2 * u.ampere / 10 ** 6, dv: sp.Rational("2.15") * u.volt}, law="I t = C dV")
+    assert eq.check().agrees
+    eq.scales = {c_uf: c / u.farad}  # pretend the constant were per farad: off by 10^6
+    assert eq.check().factor == sp.Integer(10) ** -6
+
+
+def test_latex_shows_decimal_constants_as_printed():
+    x = sp.Symbol("x")
+    assert latex(sp.Rational("2.15") * x) == "2.15 x"
+    assert latex(sp.sqrt(x) / 2) == r"\frac{\sqrt{x}}{2}"
