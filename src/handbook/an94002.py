@@ -463,6 +463,12 @@ uF_ = u.farad / 10 ** 6
 uA_ = u.ampere / 10 ** 6
 
 
+def _collected(expr, symbols):
+    """``expr`` as one fraction with its numerator collected in ``symbols`` (for display; same value)."""
+    num, den = sp.fraction(sp.together(expr))
+    return sp.collect(sp.expand(num), symbols, sp.factor) / den
+
+
 def _timer_law(charge, current, time, window):
     """Charge balance on a capacitor charged at a constant current: I t = C dV, solved for ``charge``."""
     return sp.solve(sp.Eq(current * time, charge * window), charge)[0]
@@ -598,6 +604,7 @@ def _equations() -> tuple[Equation, ...]:
     eqs.append(Equation(
         id="an94002-eq11", source=f"{NOTE} 2.4, eq (11)", title="Level-shifted sense voltage at V+",
         lhs=V_p, lhs_unit=V, printed=V_s - V_D1 + (V_D1 - V_cs) * R13 / (R12 + R13), derived=vp,
+        printed_tex=r"V_s - V_{D1} + (V_{D1} - V_{cs}) \frac{R_{13}}{R_{12} + R_{13}}",
         units={V_s: V, V_D1: V, V_cs: V, R12: OHM, R13: OHM},
         law="KCL at V+: the current through R12 (from V_s - V_cs) equals that through R13 (to V_s - V_D1)",
     ))
@@ -605,6 +612,7 @@ def _equations() -> tuple[Equation, ...]:
         id="an94002-eq11-num", source=f"{NOTE} 2.4, eq (11) with R12 = 5.6 k, R13 = 16 k, V_D1 = 7.79 V",
         title="Eq 11 with the board's values", lhs=V_p, lhs_unit=V, lhs_scale=V, scales={V_s: V_s / V, V_cs: V_cs / V},
         printed=V_s - sp.Rational("2.02") - sp.Rational("0.741") * V_cs, derived=vp,
+        printed_tex=r"V_s - 2.02 - 0.741 \, V_{cs}",
         units={V_s: V, V_cs: V, V_D1: V, R12: OHM, R13: OHM},
         values={V_D1: sp.Rational("7.79") * V, R12: sp.Rational(5600) * OHM, R13: sp.Rational(16000) * OHM},
         law="eq 11 evaluated",
@@ -613,6 +621,7 @@ def _equations() -> tuple[Equation, ...]:
     eqs.append(Equation(
         id="an94002-eq12", source=f"{NOTE} 2.4, eq (12)", title="Reference at V-",
         lhs=V_m, lhs_unit=V, printed=(V_s - V_D1) + V_D1 * R11 / (R9 + R10 + R11), derived=vm,
+        printed_tex=r"(V_s - V_{D1}) + V_{D1} \frac{R_{11}}{R_9 + R_{10} + R_{11}}",
         units={V_s: V, V_D1: V, R9: OHM, R10: OHM, R11: OHM},
         law="KCL at V-: R9 + R10 from V_s, R11 to V_s - V_D1",
     ))
@@ -621,6 +630,8 @@ def _equations() -> tuple[Equation, ...]:
         id="an94002-eq13", source=f"{NOTE} 2.4, eq (13)", title="Sense voltage at the trip point",
         lhs=V_cs, lhs_unit=V, printed=(V_D1 - V_D1 * B_ / A_).subs({A_: R13 / (R12 + R13), B_: R11 / (R9 + R10 + R11)}),
         derived=vcs, units={V_D1: V, R9: OHM, R10: OHM, R11: OHM, R12: OHM, R13: OHM},
+        printed_tex=(r"V_{D1} - V_{D1} \frac{B}{A}, \quad A = \frac{R_{13}}{R_{12} + R_{13}}, \;"
+                     r" B = \frac{R_{11}}{R_9 + R_{10} + R_{11}}"),
         law="op-amp virtual short V+ = V- with eq 11 and eq 12, solved for V_cs (offset zero)",
         note="The printed form is V_D1 - V_D1 B / A with A = R13/(R12+R13), B = R11/(R9+R10+R11).",
     ))
@@ -646,7 +657,8 @@ def _equations() -> tuple[Equation, ...]:
         id="an94002-trip-offset", source=f"{NOTE} 2.4, text (offset referred to V_cs)",
         title="Trip point with the op-amp offset", lhs=V_cs, lhs_unit=V,
         printed=(V_D1 * (1 - B_ / A_) - V_os / A_).subs({A_: R13 / (R12 + R13), B_: R11 / (R9 + R10 + R11)}),
-        derived=vcs_os, units={V_D1: V, V_os: V, R9: OHM, R10: OHM, R11: OHM, R12: OHM, R13: OHM},
+        derived=_collected(vcs_os, (V_D1, V_os)), units={V_D1: V, V_os: V, R9: OHM, R10: OHM, R11: OHM, R12: OHM, R13: OHM},
+        printed_tex=r"V_{D1} \left(1 - \frac{B}{A}\right) - \frac{V_{os}}{A}",
         law="the op-amp switches where V+ - V- = V_os",
         note="The note states the effect in words (offset divided by A); the printed form here is that statement.",
     ))
