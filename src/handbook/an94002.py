@@ -13,11 +13,9 @@ import functools
 import math
 
 import numpy as np
-import sympy as sp
-from sympy.physics import units as u
 
 from . import series, tolerance, validate
-from .registry import Equation, Example, Printed
+from .examples import Example, Printed
 
 NOTE = "AN94002"
 
@@ -438,50 +436,53 @@ def decode_12nc(code: str) -> float | None:
 # ----------------------------------------------------------------------------------------------
 # equations
 
-# physical symbols
-C, t, I, dV = sp.symbols(r"C t I \Delta{}V", positive=True)
-C_ST, t_start, I_st, V_lo, V_hi = sp.symbols(r"C_{ST} t_{start} I_{ST} V_{low} V_{high}", positive=True)
-f_osc, s_ = sp.symbols(r"f_{osc} s")
-K_t, I_m, p_, J = sp.symbols(r"K_t I p J", positive=True)
-N, n = sp.symbols(r"N n", positive=True)  # rotational speed (1/s), pole pairs
-t_cyc, t_com_, C_CD, I_max, I_min, V_win, V_noise = sp.symbols(
-    r"t_{cyc} t_{com} C_{CD} I_{ch\,max} I_{ch\,min} \Delta{}V_{win} \Delta{}V_{noise}", positive=True)
-N_max, N_min = sp.symbols(r"N_{max} N_{min}", positive=True)
-C_TI, t_wd, I_wd = sp.symbols(r"C_{TI} t_{wd} I_{wd}", positive=True)
-V_in, V_mot, R3, R4 = sp.symbols(r"V_{in} V_{mot} R_3 R_4", positive=True)
-V_s, V_D1, V_cs, V_p, V_m = sp.symbols(r"V_s V_{D1} V_{cs} V_{+} V_{-}", positive=True)
-R9, R10, R11, R12, R13 = sp.symbols(r"R_9 R_{10} R_{11} R_{12} R_{13}", positive=True)
-A_, B_ = sp.symbols("A B", positive=True)
-V_be, R7, I_lim, T, TC = sp.symbols(r"V_{be} R_7 I_{lim} T TC_{V_{be}}", real=True)
-Z, f, C2 = sp.symbols(r"|Z| f C_2", positive=True)
-# printed symbols: plain numbers in the note's units
-C_uF, RPM, RPM_min = sp.symbols(r"CAP_{\mu{}F} RPM RPM_{min}", positive=True)
-RPM_ratio = sp.Symbol(r"\frac{RPM_{max}}{RPM_{min}}", positive=True)
-
-
-uF_ = u.farad / 10 ** 6
-uA_ = u.ampere / 10 ** 6
-
-
-def _collected(expr, symbols):
-    """``expr`` as one fraction with its numerator collected in ``symbols`` (for display; same value)."""
-    num, den = sp.fraction(sp.together(expr))
-    return sp.collect(sp.expand(num), symbols, sp.factor) / den
-
-
-def _timer_law(charge, current, time, window):
-    """Charge balance on a capacitor charged at a constant current: I t = C dV, solved for ``charge``."""
-    return sp.solve(sp.Eq(current * time, charge * window), charge)[0]
-
-
-def equations() -> list[Equation]:
+def equations() -> list:
     """Every AN94002 equation (built once; sympy solving takes about a second)."""
     return list(_equations())
 
 
 @functools.lru_cache(maxsize=1)
-def _equations() -> tuple[Equation, ...]:
-    eqs: list[Equation] = []
+def _equations() -> tuple:
+    import sympy as sp  # imported here: the design code and the CLI do not need sympy
+    from sympy.physics import units as u
+
+    from .registry import Equation
+
+    uF_ = u.farad / 10 ** 6
+    uA_ = u.ampere / 10 ** 6
+
+
+    def _collected(expr, symbols):
+        """``expr`` as one fraction with its numerator collected in ``symbols`` (for display; same value)."""
+        num, den = sp.fraction(sp.together(expr))
+        return sp.collect(sp.expand(num), symbols, sp.factor) / den
+
+
+    def _timer_law(charge, current, time, window):
+        """Charge balance on a capacitor charged at a constant current: I t = C dV, solved for ``charge``."""
+        return sp.solve(sp.Eq(current * time, charge * window), charge)[0]
+
+    # physical symbols
+    C, t, I, dV = sp.symbols(r"C t I \Delta{}V", positive=True)
+    C_ST, t_start, I_st, V_lo, V_hi = sp.symbols(r"C_{ST} t_{start} I_{ST} V_{low} V_{high}", positive=True)
+    f_osc, s_ = sp.symbols(r"f_{osc} s")
+    K_t, I_m, p_, J = sp.symbols(r"K_t I p J", positive=True)
+    N, n = sp.symbols(r"N n", positive=True)  # rotational speed (1/s), pole pairs
+    t_cyc, t_com_, C_CD, I_max, I_min, V_win, V_noise = sp.symbols(
+        r"t_{cyc} t_{com} C_{CD} I_{ch\,max} I_{ch\,min} \Delta{}V_{win} \Delta{}V_{noise}", positive=True)
+    N_max, N_min = sp.symbols(r"N_{max} N_{min}", positive=True)
+    C_TI, t_wd, I_wd = sp.symbols(r"C_{TI} t_{wd} I_{wd}", positive=True)
+    V_in, V_mot, R3, R4 = sp.symbols(r"V_{in} V_{mot} R_3 R_4", positive=True)
+    V_s, V_D1, V_cs, V_p, V_m = sp.symbols(r"V_s V_{D1} V_{cs} V_{+} V_{-}", positive=True)
+    R9, R10, R11, R12, R13 = sp.symbols(r"R_9 R_{10} R_{11} R_{12} R_{13}", positive=True)
+    A_, B_ = sp.symbols("A B", positive=True)
+    V_be, R7, I_lim, T, TC = sp.symbols(r"V_{be} R_7 I_{lim} T TC_{V_{be}}", real=True)
+    Z, f, C2 = sp.symbols(r"|Z| f C_2", positive=True)
+    # printed symbols: plain numbers in the note's units
+    C_uF, RPM, RPM_min = sp.symbols(r"CAP_{\mu{}F} RPM RPM_{min}", positive=True)
+    RPM_ratio = sp.Symbol(r"\frac{RPM_{max}}{RPM_{min}}", positive=True)
+
+    eqs: list = []
     V, A, F, S, OHM = u.volt, u.ampere, u.farad, u.second, u.ohm
 
     # eq 1: start oscillator

@@ -12,7 +12,8 @@ import numpy as np
 from IPython.display import Markdown, Math, display
 from matplotlib.ticker import EngFormatter
 
-from .registry import Equation, UNIT_SCALES
+from .examples import UNIT_SCALES
+from .registry import Equation
 
 #: status -> short badge used in tables
 BADGE = {"exact": "exact", "rounding": "rounding", "misprint": "**misprint**",

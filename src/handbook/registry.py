@@ -15,38 +15,22 @@ compares it with the derived form symbolically: the difference simplifies to zer
 simplifies to a pure number (a rounded constant), or the two differ structurally, and each case is
 recorded. The dimensions of both sides are checked with ``sympy.physics.units``.
 
-An :class:`Example` is one number the note prints as the result of a calculation, with the value
-recomputed here, and a status from :func:`classify`.
+The numeric-example registry (:class:`Example`, :func:`classify`) lives in :mod:`handbook.examples`,
+which does not import sympy, and is re-exported here.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from decimal import Decimal
-from typing import Callable
 
 import sympy as sp
 from sympy.physics import units as u
-from sympy.printing.latex import LatexPrinter
+
+from .examples import STATUSES, UNIT_SCALES, Example, Printed, classify  # noqa: F401  (re-exported)
 from sympy.physics.units.systems.si import SI, dimsys_SI
 
 # ----------------------------------------------------------------------------------------------
 # units
-
-#: printed unit names -> (SI scale factor, SI unit name used in the JSON output)
-UNIT_SCALES: dict[str, tuple[float, str]] = {
-    "F": (1.0, "F"), "uF": (1e-6, "F"), "nF": (1e-9, "F"), "pF": (1e-12, "F"),
-    "ohm": (1.0, "ohm"), "kohm": (1e3, "ohm"), "Mohm": (1e6, "ohm"),
-    "V": (1.0, "V"), "mV": (1e-3, "V"),
-    "A": (1.0, "A"), "mA": (1e-3, "A"), "uA": (1e-6, "A"),
-    "s": (1.0, "s"), "ms": (1e-3, "s"), "us": (1e-6, "s"),
-    "Hz": (1.0, "Hz"), "kHz": (1e3, "Hz"), "MHz": (1e6, "Hz"),
-    "W": (1.0, "W"), "K/W": (1.0, "K/W"),
-    "%": (1e-2, "1"), "1": (1.0, "1"), "%/K": (1e-2, "1/K"), "1/K": (1.0, "1/K"),
-    "V/K": (1.0, "V/K"), "mV/K": (1e-3, "V/K"),
-    "rpm": (1.0, "rpm"), "uF*rpm": (1e-6, "F*rpm"),
-}
-
 
 def dimension_of(expr: sp.Expr):
     """The SI dimension of an expression built from sympy unit quantities.
@@ -217,112 +201,4 @@ class Equation:
             "dimensions_ok": bool(c.dims_ok),
             "law": self.law,
             "note": note,
-        }
-
-
-# ----------------------------------------------------------------------------------------------
-# numeric examples
-
-STATUSES = ("exact", "rounding", "misprint", "inconsistent", "n/a")
-
-
-@dataclass(frozen=True)
-class Printed:
-    """A number as the note prints it: the digits (as text) and the unit it is printed in."""
-
-    text: str
-    unit: str
-
-    @property
-    def si(self) -> float:
-        return float(Decimal(self.text)) * UNIT_SCALES[self.unit][0]
-
-    @property
-    def half_unit(self) -> float:
-        """Half a unit in the last printed digit, in SI.
-
-        Trailing zeros of an integer without a decimal point are taken as not significant
-        ("160" holds 155 to 165), as is usual when nothing says otherwise.
-        """
-        d = Decimal(self.text).normalize() if "." not in self.text else Decimal(self.text)
-        exponent = d.as_tuple().exponent
-        return 0.5 * 10.0 ** exponent * UNIT_SCALES[self.unit][0]
-
-    def __str__(self) -> str:
-        return f"{self.text} {self.unit}"
-
-
-def classify(printed: float, half_unit: float, computed: float, *, relation: str = "=",
-             basis: str = "note", via_rounded: float | None = None) -> str:
-    """Status of a printed number against its recomputation.
-
-    * ``exact``: equal to floating-point precision (for a bound: the printed value meets it);
-    * ``rounding``: within half a unit of the last printed digit, of the recomputed value or of the
-      value the note's own rounded intermediate gives (``via_rounded``);
-    * otherwise ``misprint`` when the recomputation uses the note's own inputs (``basis="note"``),
-      and ``inconsistent`` when it uses another source (a device datasheet, another note).
-    """
-    if not (math.isfinite(printed) and math.isfinite(computed)):
-        raise ValueError(f"printed={printed!r} and computed={computed!r} must both be finite numbers")
-    if relation == ">=":
-        ok = printed >= computed * (1 - 1e-12)
-    elif relation == "<=":
-        ok = printed <= computed * (1 + 1e-12)
-    else:
-        scale = max(abs(printed), abs(computed), 1e-300)
-        if abs(printed - computed) <= 1e-9 * scale:
-            return "exact"
-        tol = half_unit * (1 + 1e-9) + 1e-12 * scale
-        ok = abs(printed - computed) <= tol or (via_rounded is not None and abs(printed - via_rounded) <= tol)
-        if ok:
-            return "rounding"
-    if relation != "=" and ok:
-        return "exact"
-    return "misprint" if basis == "note" else "inconsistent"
-
-
-@dataclass
-class Example:
-    id: str
-    source: str
-    quantity: str
-    printed: Printed
-    compute: Callable[[dict], float]  # params -> computed value in SI
-    reason: str  # one line: why the status is what it is
-    depends: tuple[str, ...] = ()  # parameter names the computation reads
-    relation: str = "="
-    basis: str = "note"  # "note" or the other source the recomputation rests on
-    via_rounded: Callable[[dict], float] | None = None
-    chapter: str = ""
-    printed_tex: str = ""  # the printed right side as LaTeX, where sympy would re-arrange it
-
-    @property
-    def unit(self) -> str:
-        return UNIT_SCALES[self.printed.unit][1]
-
-    def evaluate(self, params: dict, defaults: dict) -> dict:
-        """Recompute with ``params``; compare with the print only where the inputs are the note's."""
-        computed = float(self.compute(params))
-        changed = [k for k in self.depends if params.get(k) != defaults.get(k)]
-        if changed:
-            status = "n/a"
-            reason = "inputs differ from the note's (" + ", ".join(changed) + "): no printed value to compare"
-        else:
-            via = None if self.via_rounded is None else float(self.via_rounded(params))
-            status = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation,
-                              basis=self.basis, via_rounded=via)
-            reason = self.reason
-        return {
-            "id": self.id,
-            "source": self.source,
-            "chapter": self.chapter,
-            "quantity": self.quantity,
-            "unit": self.unit,
-            "printed": self.printed.si,
-            "printed_text": str(self.printed),
-            "computed": computed,
-            "relation": self.relation,
-            "basis": self.basis,
-            "status": status,
-            "reason": reason,
         }

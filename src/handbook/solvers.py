@@ -1,0 +1,47 @@
+"""Shared casadi plumbing: a silent IPOPT, and naming the constraint that binds from its multiplier."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+#: IPOPT options that keep every solve silent and deterministic in notebook output
+IPOPT_OPTIONS = {"ipopt.print_level": 0, "ipopt.sb": "yes", "print_time": False,
+                 "ipopt.tol": 1e-12, "ipopt.acceptable_tol": 1e-10}
+
+
+class Infeasible(Exception):
+    """A valid specification that no component choice meets; ``achievable`` says what can be met."""
+
+    def __init__(self, message: str, achievable: dict):
+        super().__init__(message)
+        self.achievable = achievable
+
+
+@dataclass
+class Solution:
+    x: np.ndarray
+    f: float
+    multipliers: np.ndarray  # one per constraint (IPOPT's lam_g)
+    names: list[str]
+    success: bool
+
+    def binding(self, threshold: float = 1e-6) -> list[str]:
+        """Names of the constraints whose multiplier is not zero, largest first."""
+        order = np.argsort(-np.abs(self.multipliers))
+        return [self.names[i] for i in order if abs(self.multipliers[i]) > threshold]
+
+
+def minimise(f, x, constraints: list[tuple[str, object, float, float]], x0, lbx, ubx) -> Solution:
+    """Minimise ``f(x)`` subject to named constraints ``lb <= g(x) <= ub`` with a silent IPOPT.
+
+    ``x`` is a casadi SX/MX symbol; ``constraints`` is a list of (name, g, lb, ub).
+    """
+    names = [c[0] for c in constraints]
+    g = ca.vertcat(*[c[1] for c in constraints])
+    solver = ca.nlpsol("design", "ipopt", {"x": x, "f": f, "g": g}, IPOPT_OPTIONS)
+    r = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=[c[2] for c in constraints], ubg=[c[3] for c in constraints])
+    stats = solver.stats()
+    return Solution(np.array(r["x"]).ravel(), float(r["f"]), np.array(r["lam_g"]).ravel(), names,
+                    bool(stats["success"]))
