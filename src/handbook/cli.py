@@ -43,6 +43,35 @@ def cmd_equations(args) -> int:
     return 0
 
 
+def cmd_design(args) -> int:
+    from . import spec as specmod
+    from .solvers import Infeasible
+    from .validate import InputError
+
+    try:
+        spec = specmod.load(args.spec)
+        result = specmod.run(spec)
+    except InputError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except Infeasible as exc:
+        table = getattr(exc, "table", "")
+        print(f"cannot be met [{table}]: {exc}", file=sys.stderr)
+        if args.json:
+            print(json.dumps({"infeasible": {"table": table, "message": str(exc), "achievable": exc.achievable}},
+                             indent=1, default=float))
+        return 3
+    out = specmod.summary(result)
+    if args.json:
+        print(json.dumps(out, indent=1))
+    else:
+        for table, values in out.items():
+            print(f"[{table}]")
+            for k, v in values.items():
+                print(f"  {k:20s} {v:.6g}" if isinstance(v, float) else f"  {k:20s} {v}")
+    return 0
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m handbook", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -52,6 +81,10 @@ def main(argv=None) -> int:
     p = sub.add_parser("equations", help="every equation: printed and derived forms, agreement")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_equations)
+    p = sub.add_parser("design", help="choose CAP-CD, R7/R9 and the class-D switching frequency for a spec")
+    p.add_argument("spec", help="TOML file with optional [commutation], [current_limiter], [class_d] tables")
+    p.add_argument("--json", action="store_true", help="one JSON object, SI units")
+    p.set_defaults(func=cmd_design)
     args = parser.parse_args(argv)
     return args.func(args)
 

@@ -188,10 +188,12 @@ def zener_range(s: dict) -> tuple[float, float]:
 def vcs_extremes(r9, s: dict):
     """Lowest and highest trip voltage over every tolerance corner, in closed form.
 
-    V_cs = V_D1 - (1 + R12/R13) (V_D1 B + V_os), B = R11 / (R9 + R10 + R11). V_cs rises with V_D1
-    (while 1 - B/A > 0), with R9, R10 and R13, and falls with R11, R12 and V_os, so the high corner
-    is (V_D1+, R9+, R10+, R11-, R12-, R13+, V_os-) and the low corner its mirror image. The unit
-    tests check this against all 128 corners. Works on numpy arrays and casadi symbols.
+    V_cs = V_D1 - (1 + R12/R13) (V_D1 B + V_os), B = R11 / (R9 + R10 + R11). Whatever V_D1 is, V_cs
+    rises with R9, R10 and R13 and falls with R11, R12 and V_os (because V_D1 B + V_os > 0), so the
+    high corner of the resistors and offset is (R9+, R10+, R11-, R12-, R13+, V_os-) and the low corner
+    its mirror image. V_cs is linear in V_D1 with slope 1 - B/A, whose sign depends on the design, so
+    both zener ends are evaluated. The unit tests check this against all 128 corners. Works on numpy
+    arrays and casadi symbols.
     """
     t = s["resistor_tolerance"]
     vz_lo, vz_hi = zener_range(s)
@@ -200,8 +202,12 @@ def vcs_extremes(r9, s: dict):
     def vcs(vz, r9_, r10, r11, r12, r13, vos):
         return vz - (1 + r12 / r13) * (vz * r11 / (r9_ + r10 + r11) + vos)
 
-    high = vcs(vz_hi, r9 * hi_, s["r10"] * hi_, s["r11"] * lo_, s["r12"] * lo_, s["r13"] * hi_, -s["offset"])
-    low = vcs(vz_lo, r9 * lo_, s["r10"] * lo_, s["r11"] * hi_, s["r12"] * hi_, s["r13"] * lo_, s["offset"])
+    high_r = (r9 * hi_, s["r10"] * hi_, s["r11"] * lo_, s["r12"] * lo_, s["r13"] * hi_, -s["offset"])
+    low_r = (r9 * lo_, s["r10"] * lo_, s["r11"] * hi_, s["r12"] * hi_, s["r13"] * lo_, s["offset"])
+    symbolic = isinstance(r9, (ca.SX, ca.MX))
+    fmax, fmin = (ca.fmax, ca.fmin) if symbolic else (np.maximum, np.minimum)
+    high = fmax(vcs(vz_hi, *high_r), vcs(vz_lo, *high_r))
+    low = fmin(vcs(vz_lo, *low_r), vcs(vz_hi, *low_r))
     return low, high
 
 
