@@ -10,7 +10,7 @@ import matplotlib
 import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import Markdown, Math, display
-from matplotlib.ticker import EngFormatter
+from matplotlib.ticker import EngFormatter  # noqa: F401  (used by the chapters as book.EngFormatter)
 
 from .examples import UNIT_SCALES
 from .registry import Equation
