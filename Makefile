@@ -23,6 +23,7 @@ test: $(STAMP)
 # Re-execute every chapter in place after a change to src/handbook (nbval compares these outputs).
 notebooks: $(STAMP)
 	$(BIN)/python tools/run_notebooks.py
+	$(BIN)/python tools/make_examples.py
 
 clean:
 	rm -rf _build $(VENV)

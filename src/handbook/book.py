@@ -76,10 +76,13 @@ def examples_table(rows: list[dict]) -> Markdown:
     return Markdown("\n".join(lines))
 
 
-def table(header: list[str], rows: list[list]) -> Markdown:
+def table_md(header: list[str], rows: list[list]) -> Markdown:
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
     return Markdown("\n".join(lines))
+
+
+table = table_md
 
 
 def glue_all(**values) -> None:
@@ -99,3 +102,28 @@ def axes(xlabel: str, ylabel: str, xunit: str = "", yunit: str = ""):
     if yunit:
         ax.yaxis.set_major_formatter(EngFormatter(unit=yunit))
     return fig, ax
+
+
+def design_table(table: str, result) -> Markdown:
+    """One design's results as a table, or what can be met when nothing can."""
+    from .solvers import Infeasible
+    from .spec import OUTPUT_KEYS
+
+    if isinstance(result, Infeasible):
+        extra = "; ".join(f"{k} = {v:.4g}" if isinstance(v, float) else f"{k} = {v}" for k, v in result.achievable.items())
+        return Markdown(f"**Cannot be met** (`{table}`): {result}  \nWhat can be met: {extra}")
+    units = {"cap_cd": "F", "cap_dc": "F", "r7": "Ω", "r9": "Ω", "r_osc": "Ω", "i_trip_min": "A", "i_trip_max": "A",
+             "i_trip_nominal": "A", "p_r7": "W", "v_cs_nominal": "V", "f_sw": "Hz", "p_dissipation": "W", "p_clip": "W"}
+    rows = []
+    for k in OUTPUT_KEYS[table]:
+        v = result[k]
+        if k in units:
+            shown = eng(v, units[k])
+        elif k in ("efficiency", "thd_n", "noise_margin", "margin_low", "margin_high"):
+            shown = f"{v:.2%}"
+        elif isinstance(v, float):
+            shown = f"{v:.4g}"
+        else:
+            shown = str(v)
+        rows.append([k, shown])
+    return table_md(["result", "value"], rows)

@@ -62,6 +62,12 @@ def cmd_design(args) -> int:
                              indent=1, default=float))
         return 3
     out = specmod.summary(result)
+    if args.bom:
+        try:
+            specmod.write_bom(specmod.bom(result), args.bom)
+        except OSError as exc:
+            print(f"error: cannot write {args.bom}: {exc.strerror}", file=sys.stderr)
+            return 2
     if args.json:
         print(json.dumps(out, indent=1))
     else:
@@ -84,6 +90,7 @@ def main(argv=None) -> int:
     p = sub.add_parser("design", help="choose CAP-CD, R7/R9 and the class-D switching frequency for a spec")
     p.add_argument("spec", help="TOML file with optional [commutation], [current_limiter], [class_d] tables")
     p.add_argument("--json", action="store_true", help="one JSON object, SI units")
+    p.add_argument("--bom", metavar="FILE.csv", help="also write a bill of materials (written only on success)")
     p.set_defaults(func=cmd_design)
     args = parser.parse_args(argv)
     return args.func(args)
