@@ -1,0 +1,140 @@
+"""The rendered book in a real browser: build it, open every page in headless Chromium.
+
+Checks, for every page of _toc.yml: it loads; its math is typeset by MathJax (no raw TeX left);
+every figure its notebook made is on the page and its file exists; every internal link and anchor
+resolves; the browser console shows no errors. A screenshot of one chapter is kept in
+_build/artifacts/. Needs Debian's `chromium` (`make test` installs it where apt-get runs as root);
+without it the checks report themselves skipped and why.
+"""
+import json
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+from urllib.parse import unquote
+
+import pytest
+import yaml
+from bs4 import BeautifulSoup
+
+ROOT = Path(__file__).resolve().parents[1]
+HTML = ROOT / "_build" / "html"
+CHROMIUM = next((p for p in map(shutil.which, ("chromium", "chromium-browser", "google-chrome")) if p), None)
+pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="no Chromium on this machine: install Debian's "
+                                "'chromium' package (make test does so where apt-get runs as root)")
+FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+         "--disable-background-networking", "--disable-component-update", "--disable-sync",
+         "--enable-logging=stderr", "--v=0", "--virtual-time-budget=20000"]
+
+
+def toc_files():
+    toc = yaml.safe_load((ROOT / "_toc.yml").read_text())
+    files = [toc["root"]]
+    for part in toc.get("parts", []):
+        files += [c["file"] for c in part["chapters"]]
+    return files
+
+
+def chromium(*args):
+    with tempfile.TemporaryDirectory() as profile:
+        return subprocess.run([CHROMIUM, *FLAGS, f"--user-data-dir={profile}", *args],
+                              capture_output=True, text=True, timeout=180)
+
+
+@pytest.fixture(scope="module")
+def site():
+    jb = Path(sys.executable).with_name("jupyter-book")
+    out = subprocess.run([str(jb), "build", str(ROOT), "-W", "-n", "--keep-going"], capture_output=True, text=True,
+                         timeout=900)
+    assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    return HTML
+
+
+@pytest.fixture(scope="module")
+def rendered(site):
+    def one(doc):
+        page = site / f"{doc}.html"
+        r = chromium("--dump-dom", page.as_uri())
+        return doc, (page, r.stdout, [l for l in r.stderr.splitlines() if ":CONSOLE" in l])
+    with ThreadPoolExecutor(2) as pool:
+        return dict(pool.map(one, toc_files()))
+
+
+def test_every_page_loads(rendered):
+    for doc, (page, dom, _) in rendered.items():
+        soup = BeautifulSoup(dom, "html.parser")
+        assert soup.find("h1"), f"{doc}: no title rendered"
+        assert soup.find("main") or soup.find("article"), f"{doc}: no content"
+
+
+def test_math_is_typeset(rendered):
+    typeset = 0
+    for doc, (_, dom, _) in rendered.items():
+        soup = BeautifulSoup(dom, "html.parser")
+        for el in soup.select(".math"):
+            assert el.find("mjx-container"), f"{doc}: math left as raw TeX: {el.get_text()[:80]!r}"
+            typeset += 1
+        for pre in soup.select("pre, code, script"):
+            pre.decompose()
+        text = soup.get_text()
+        assert not re.search(r"\\\(|\\\[|\$\$", text), f"{doc}: raw TeX delimiters in the text"
+    assert typeset > 100
+
+
+def test_every_figure_is_on_its_page(rendered):
+    for doc, (page, dom, _) in rendered.items():
+        source = ROOT / f"{doc}.ipynb"
+        made = 0
+        if source.exists():
+            nb = json.loads(source.read_text())
+            made = sum("image/png" in o.get("data", {}) for c in nb["cells"] for o in c.get("outputs", []))
+        imgs = [i for i in BeautifulSoup(dom, "html.parser").select("main img, article img")
+                if "_images/" in i.get("src", "")]
+        assert len(imgs) == made, f"{doc}: {made} figures made, {len(imgs)} on the page"
+        for img in imgs:
+            f = (page.parent / unquote(img["src"])).resolve()
+            assert f.exists() and f.stat().st_size > 1000, f"{doc}: missing figure {img['src']}"
+
+
+def test_internal_links_resolve(site, rendered):
+    ids = {}
+
+    def anchors(path):
+        if path not in ids:
+            ids[path] = {t.get("id") for t in BeautifulSoup(path.read_text(), "html.parser").find_all(id=True)}
+        return ids[path]
+
+    checked = 0
+    for doc, (page, dom, _) in rendered.items():
+        for a in BeautifulSoup(dom, "html.parser").select("a[href]"):
+            href = a["href"]
+            if re.match(r"^[a-z]+:", href) and not href.startswith("file:"):
+                continue  # external
+            target, _, frag = href.partition("#")
+            path = page if not target else (page.parent / unquote(target)).resolve()
+            if path.is_dir():
+                path = path / "index.html"
+            assert path.exists(), f"{doc}: broken link {href}"
+            if frag and path.suffix == ".html":
+                assert frag in anchors(path), f"{doc}: missing anchor {href}"
+            checked += 1
+    assert checked > 200
+
+
+def test_browser_console_has_no_errors(rendered):
+    bad = {doc: [l.split("CONSOLE", 1)[1][:200] for l in console
+                 if re.search(r"Uncaught|Error|Failed|error", l.split("CONSOLE", 1)[1])]
+           for doc, (_, _, console) in rendered.items()}
+    assert not {d: v for d, v in bad.items() if v}
+
+
+def test_screenshot_of_a_chapter_is_kept(site):
+    art = ROOT / "_build" / "artifacts"
+    art.mkdir(parents=True, exist_ok=True)
+    shot = art / "opamp_limiter.png"
+    shot.unlink(missing_ok=True)
+    chromium("--window-size=1280,2400", f"--screenshot={shot}", (site / "book/an94002/opamp_limiter.html").as_uri())
+    assert shot.exists() and shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
