@@ -15,7 +15,7 @@ import math
 import numpy as np
 
 from . import series, tolerance, validate
-from .examples import Example, Printed
+from .examples import Example, Printed, TextErratum
 
 NOTE = "AN94002"
 
@@ -616,7 +616,7 @@ def _equations() -> tuple:
         printed_tex=r"V_s - 2.02 - 0.741 \, V_{cs}",
         units={V_s: V, V_cs: V, V_D1: V, R12: OHM, R13: OHM},
         values={V_D1: sp.Rational("7.79") * V, R12: sp.Rational(5600) * OHM, R13: sp.Rational(16000) * OHM},
-        law="eq 11 evaluated",
+        law="eq 11 evaluated", rounded_constants=True,
         note="2.02 and 0.741 are 2.0196 V and 0.74074 rounded.",
     ))
     eqs.append(Equation(
@@ -769,7 +769,8 @@ def examples_list() -> list[Example]:
                 Printed("0.23", "uF"), lambda p: cap_st_for(1 / p["f_start"], p["i_cap_st"], *DATASHEET["cap_st_levels"][0]),
                 "the TDA5144 datasheet switches CAP-ST at 0.20 V and 2.20 V and gets 0.25 uF; the note's 0.05 V "
                 "level (and 2.15 factor) comes from the TDA5141/TDA5145 datasheets",
-                ("f_start", "i_cap_st"), basis="TDA5144 datasheet", chapter=S),
+                ("f_start", "i_cap_st"), basis="TDA5144 datasheet", consequence="with a TDA5144, 0.22 uF gives a 440 ms period, not 473 ms: size CAP-ST with the datasheet of the IC on the board",
+                chapter=S),
         # ---- 2.1.2
         Example("an94002-window", f"{NOTE} 2.1.2", "smallest CAP-CD window dV_capmin = 2.3 - 0.9", Printed("1.4", "V"),
                 lambda p: p["v_cd_high_min"] - p["v_cd_low_max"], "2.3 V - 0.9 V; agrees with the datasheet's "
@@ -799,7 +800,8 @@ def examples_list() -> list[Example]:
                 Printed("22", "uA"), lambda p: DATASHEET["cap_cd_charge"][0][2],
                 "22 uA is the datasheet's largest discharge (sink) current; the charge current is at most 11 uA "
                 "(sink/source ratio about 2), so the note's capacitor is twice the size the bound needs",
-                (), basis="TDA5144 datasheet", chapter=CD),
+                (), basis="TDA5144 datasheet", consequence="CAP-CD comes out twice the size the bound needs, halving the top speed at which commutation stays reliable",
+                chapter=CD),
         # ---- 2.1.3
         Example("an94002-eq9-constant", f"{NOTE} 2.1.3, eq (9)", "CAP-TI per second of watchdog time",
                 Printed("2.63", "uF"), lambda p: cap_ti_for(1.0, p["i_wd"], p["v_ti_low"], p["v_ti_high"]),
@@ -824,7 +826,8 @@ def examples_list() -> list[Example]:
                 lambda p: DATASHEET["bc557_vbe"][0][2],
                 "BC557 V_BE(on) is 0.55 to 0.70 V at 2 mA; 0.8 V is above the maximum, so the real limit is "
                 "lower than R7 = 0.8 V / I_lim predicts (by about 22 % at the typical 0.62 V)",
-                (), basis="BC557 datasheet", chapter=T1),
+                (), basis="BC557 datasheet", consequence="R7 sized with 0.8 V limits about 20 % below the target with a typical BC557; check the limit on the board",
+                chapter=T1),
         # ---- 2.4
         Example("an94002-offset-generic", f"{NOTE} 2.4", "tolerance from a 10 mV offset at V_cs = 100 mV",
                 Printed("10", "%"), lambda p: p["offset_generic"] / p["v_cs"], "10 mV / 100 mV, before any level shift",
@@ -845,11 +848,13 @@ def examples_list() -> list[Example]:
         Example("an94002-window-high", f"{NOTE} 2.4", "op-amp input at trip, offset -9 mV side (upper)",
                 Printed("90.5", "mV"), lambda p: _a(p) * p["v_cs"] + p["offset"],
                 "74.07 + 9 = 83.07 mV; 90.5 mV is AN93008's 81.5 + 9 (A = 0.815) copied unchanged",
-                ("r12", "r13", "v_cs", "offset"), chapter=OP),
+                ("r12", "r13", "v_cs", "offset"), consequence="none for the tolerance (the +-12 % is right), but a reader checking the window against 74.1 mV is misled",
+                chapter=OP),
         Example("an94002-window-low", f"{NOTE} 2.4", "op-amp input at trip, offset +9 mV side (lower)",
                 Printed("72.5", "mV"), lambda p: _a(p) * p["v_cs"] - p["offset"],
                 "74.07 - 9 = 65.07 mV; 72.5 mV is AN93008's 81.5 - 9 (A = 0.815) copied unchanged",
-                ("r12", "r13", "v_cs", "offset"), chapter=OP),
+                ("r12", "r13", "v_cs", "offset"), consequence="as for the upper end: the printed window belongs to AN93008's supply-referenced circuit",
+                chapter=OP),
         Example("an94002-offset-tol", f"{NOTE} 2.4", "offset-related tolerance of the limit", Printed("12", "%"),
                 lambda p: p["offset"] / (_a(p) * p["v_cs"]), "9 mV / 74.07 mV = 12.15 % (consistent with A = 0.741, "
                 "not with the printed 90.5/72.5 mV window)", ("r12", "r13", "v_cs", "offset"), chapter=OP),
@@ -864,12 +869,14 @@ def examples_list() -> list[Example]:
         Example("an94002-zener-tc", f"{NOTE} 2.4 vs BZX79 datasheet", "largest zener temperature coefficient",
                 Printed("6.2", "mV/K"), lambda p: DATASHEET["bzx79_tc"][0][1] * p["v_zener"],
                 "BZX79 datasheet: up to +0.08 %/K, 6.56 mV/K at 8.2 V; the drift becomes +-164 mV, +-2.1 %",
-                ("v_zener",), basis="BZX79 datasheet", chapter=OP),
+                ("v_zener",), basis="BZX79 datasheet", consequence="the drift term grows from +-2.0 % to +-2.1 %: negligible",
+                chapter=OP),
         Example("an94002-resistor-tol", f"{NOTE} 2.4", "resistor-related tolerance of the limit (1 % R9..R13)",
                 Printed("5", "%"), _resistor_only,
                 "eq 14's matching (R10 = R12, R11 = R13) carried into the tolerance; with each 1 % resistor "
                 "varying on its own V_cs = V_D1 (1 - B/A) moves -86 %/+85 % (a 100 mV difference of two 8 V dividers)",
-                ("r10", "r11", "r12", "r13", "v_cs", "v_zener", "resistor_tolerance"), chapter=OP),
+                ("r10", "r11", "r12", "r13", "v_cs", "v_zener", "resistor_tolerance"), consequence="the limiter can trip anywhere from almost no current to twice the design value on a real board; design it with the exact worst case (chapter 'Choosing R7 and R9')",
+                chapter=OP),
         Example("an94002-total-tol", f"{NOTE} 2.4", "total initial tolerance, note's method 1.12 x 1.05 x 1.05",
                 Printed("23", "%"), lambda p: 1.12 * 1.05 * 1.05 - 1,
                 "1.12 x 1.05 x 1.05 = 1.2348; the method's lower end is 0.88 x 0.95 x 0.95 = 0.794 (-20.6 %)",
@@ -879,6 +886,7 @@ def examples_list() -> list[Example]:
                 "every corner of 1 % R9..R13, 5 % zener and +-9 mV offset: the trip voltage spans 1.2 to 206 mV "
                 "(-99 %/+106 %), not +-23 %",
                 ("r10", "r11", "r12", "r13", "v_cs", "v_zener", "zener_tolerance", "offset", "resistor_tolerance"),
+                consequence="a board built as the note says is not guaranteed to limit at all, or may limit far too early; see the design chapter for a limiter that is",
                 chapter=OP),
         # ---- 3
         Example("an94002-c2", f"{NOTE} 3", "C2 capacitance for |Z| < 2 ohm at 2 MHz (ideal capacitor)",
@@ -911,3 +919,24 @@ def examples(p: dict | None = None, chapter: str | None = None) -> list[dict]:
     """Every AN94002 example evaluated with ``p`` (default: the note's values)."""
     p = DEFAULTS if p is None else p
     return [e.evaluate(p, DEFAULTS) for e in examples_list() if chapter is None or e.chapter == chapter]
+
+
+#: misprints and inconsistencies of AN94002 that are not numbers
+TEXT_ERRATA = [
+    TextErratum("an94002-t-dvcapmin", f"{NOTE} 2.1.2, eq (6) and (7)",
+                "one name, dV_capmin, for two quantities: the 1.4 V window in eq 6 and the noise floor in eq 7",
+                "eq 6 sets dV_capmin = 2.3 - 0.9 = 1.4 V; eq 7 calls the smallest swing safe from noise dV_capmin too, "
+                "and eq 8 then renames the window dV_capmax",
+                "read eq 7 and 8 with dV_win (window) and dV_noise (floor); using 1.4 V in eq 7 would give a top speed "
+                "14 times too low"),
+    TextErratum("an94002-t-160", f"{NOTE} 2.1.2", "'CAP-CD >= 160 / 1800 x 6' read left to right is 0.533 uF",
+                "the printed result 0.0148 uF shows the intended 160 / (1800 x 6)", "none once read as intended"),
+    TextErratum("an94002-t-1v", f"{NOTE} 2 and 2.3", "the one-transistor limiter needs 'about 1 V' (section 2) or 'about 0.8 V' (2.3)",
+                "both are rough figures for the same V_be; the BC557 datasheet gives 0.55 to 0.70 V at 2 mA",
+                "size R7 from the measured limit, not from either figure"),
+    TextErratum("an94002-t-12nc", f"{NOTE} 4, parts list", "three 12NC codes decode to other values than printed",
+                "R1 ...53229 is 2.2 ohm (printed 22 ohm); R14 ...53701 is 700 ohm, not an E-series value (printed 750 ohm, "
+                "code ...751); C6 ...17224 is 220 nF, the code of C5/C7/C8 (printed 10 nF)",
+                "order by value and check the code: the wrong C6 would make the watchdog 22 times longer"),
+    TextErratum("an94002-t-cadcd", f"{NOTE} 2.1.2", "'CAD-CD' and 'CAD-DC' for CAP-CD and CAP-DC", "typographical", "none"),
+]

@@ -92,6 +92,7 @@ class Example:
     basis: str = "note"  # "note" or the other source the recomputation rests on
     via_rounded: Callable[[dict], float] | None = None
     chapter: str = ""
+    consequence: str = ""  # for a misprint or an inconsistency: what it means for a designer
     printed_tex: str = ""  # the printed right side as LaTeX, where sympy would re-arrange it
 
     @property
@@ -123,4 +124,16 @@ class Example:
             "basis": self.basis,
             "status": status,
             "reason": reason,
+            "consequence": self.consequence,
         }
+
+
+@dataclass(frozen=True)
+class TextErratum:
+    """A misprint or inconsistency that is not a number: a wrong unit, a name used twice, a copied text."""
+
+    id: str
+    source: str
+    what: str
+    evidence: str
+    consequence: str

@@ -110,6 +110,7 @@ class Equation:
     ocr_form: sp.Expr | None = None  # the OCR text taken literally, where it differs
     chapter: str = ""
     printed_tex: str = ""  # the printed right side as LaTeX, where sympy would re-arrange it
+    rounded_constants: bool = False  # printed with rounded numbers substituted: differs by rounding only
 
     # -- forms -------------------------------------------------------------------------------
     def printed_physical(self) -> sp.Expr:
