@@ -22,6 +22,12 @@ def test_printed_parses_value_and_precision(text, unit, si, half):
     assert p.half_unit == pytest.approx(half, rel=1e-12)
 
 
+def test_printed_with_stated_significant_figures():
+    assert Printed("200", "kHz").half_unit == pytest.approx(50e3)  # trailing zeros: not significant by default
+    assert Printed("200", "kHz", sig=3).half_unit == pytest.approx(500.0)
+    assert Printed("10", "A", sig=2).half_unit == pytest.approx(0.5)
+
+
 def test_classify_exact_rounding_misprint():
     assert classify(9.8, 0.05, 9.8) == "exact"
     assert classify(5.0, 0.5, 5.1367) == "rounding"

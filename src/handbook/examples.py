@@ -12,7 +12,7 @@ UNIT_SCALES: dict[str, tuple[float, str]] = {
     "ohm": (1.0, "ohm"), "kohm": (1e3, "ohm"), "Mohm": (1e6, "ohm"),
     "V": (1.0, "V"), "mV": (1e-3, "V"),
     "A": (1.0, "A"), "mA": (1e-3, "A"), "uA": (1e-6, "A"),
-    "s": (1.0, "s"), "ms": (1e-3, "s"), "us": (1e-6, "s"),
+    "s": (1.0, "s"), "ms": (1e-3, "s"), "us": (1e-6, "s"), "ns": (1e-9, "s"),
     "Hz": (1.0, "Hz"), "kHz": (1e3, "Hz"), "MHz": (1e6, "Hz"),
     "W": (1.0, "W"), "K/W": (1.0, "K/W"),
     "%": (1e-2, "1"), "1": (1.0, "1"), "%/K": (1e-2, "1/K"), "1/K": (1.0, "1/K"),
@@ -30,6 +30,7 @@ class Printed:
 
     text: str
     unit: str
+    sig: int | None = None  # significant figures, where the context fixes them ("200 kHz" in a table: 3)
 
     @property
     def si(self) -> float:
@@ -42,6 +43,10 @@ class Printed:
         Trailing zeros of an integer without a decimal point are taken as not significant
         ("160" holds 155 to 165), as is usual when nothing says otherwise.
         """
+        if self.sig is not None:
+            v = abs(float(Decimal(self.text)))
+            exponent = math.floor(math.log10(v)) - self.sig + 1 if v else 0
+            return 0.5 * 10.0 ** exponent * UNIT_SCALES[self.unit][0]
         d = Decimal(self.text).normalize() if "." not in self.text else Decimal(self.text)
         exponent = d.as_tuple().exponent
         return 0.5 * 10.0 ** exponent * UNIT_SCALES[self.unit][0]
