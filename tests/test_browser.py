@@ -45,10 +45,18 @@ def chromium(*args):
 
 
 @pytest.fixture(scope="module")
-def site():
+def site(tmp_path_factory):
+    """The book built from the committed outputs (nbval proves they equal a fresh execution; `make book`
+    re-executes every chapter). Same configuration as _config.yml except for execution."""
+    config = yaml.safe_load((ROOT / "_config.yml").read_text())
+    config["execute"]["execute_notebooks"] = "off"
+    # paths in the config are relative to the config file, which now lives elsewhere
+    config["sphinx"]["local_extensions"] = {k: str(ROOT / v) for k, v in config["sphinx"]["local_extensions"].items()}
+    path = tmp_path_factory.mktemp("config") / "_config.yml"
+    path.write_text(yaml.safe_dump(config))
     jb = Path(sys.executable).with_name("jupyter-book")
-    out = subprocess.run([str(jb), "build", str(ROOT), "-W", "-n", "--keep-going"], capture_output=True, text=True,
-                         timeout=900)
+    out = subprocess.run([str(jb), "build", str(ROOT), "-W", "-n", "--keep-going", "--config", str(path)],
+                         capture_output=True, text=True, timeout=900)
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
     return HTML
 
