@@ -1,10 +1,10 @@
 """Every source module's equations, numeric examples and textual errata, in book order."""
 from __future__ import annotations
 
-from . import an93008, an94002, lm4651, tda5341
+from . import an93008, an94002, lm4651, tca5600, tda5341
 
 #: source modules in book order; each offers equations(), examples() and TEXT_ERRATA
-SOURCES = (an94002, an93008, tda5341, lm4651)
+SOURCES = (an94002, an93008, tda5341, lm4651, tca5600)
 
 
 def equations():
