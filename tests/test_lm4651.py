@@ -15,10 +15,12 @@ HAND = {
     "lm4651-p-total": X * 125 / (1 - X) + 125 / 4 * 0.46, "lm4651-theta-tf": 100 / 21 - 2.2, "lm4651-theta-t": 100 / 21 - 1.2,
     "lm4651-efficiency": 125 / 147, "lm4651-system-pd": X * 125 / (1 - X) + 125 / 4 * 0.46 + 1.0,
     "lm4651-eps0": 8.8541878128e-12 * 0.0254 * 1e12, "lm4651-rf-ratio": 10.0,
+    "lm4651-gain-4k7": 3.5 / 4.7 * 11 - 3.5 / 4.7 + 0.5,
 }
 STATUS = {
     "inconsistent": {"lm4651-f-15k", "lm4651-f-0", "lm4651-dead-time", "lm4651-overmod", "lm4651-eps0"},
-    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-cstart", "lm4651-theta-tf", "lm4651-theta-t"},
+    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-cstart", "lm4651-theta-tf", "lm4651-theta-t",
+                 "lm4651-gain-4k7"},
 }
 
 
