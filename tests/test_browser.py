@@ -27,7 +27,7 @@ pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="no Chromium on this ma
                                 "'chromium' package (make test does so where apt-get runs as root)")
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
          "--disable-background-networking", "--disable-component-update", "--disable-sync",
-         "--enable-logging=stderr", "--v=0", "--virtual-time-budget=20000"]
+         "--enable-logging=stderr", "--v=0"]
 
 
 def toc_files():
@@ -61,12 +61,26 @@ def site(tmp_path_factory):
     return HTML
 
 
+def _console_errors(console):
+    return [l.split("CONSOLE", 1)[1][:200] for l in console if re.search(r"Uncaught|Error|Failed|error", l.split("CONSOLE", 1)[1])]
+
+
+def _complete(dom, console):
+    """Typeset and quiet: the page finished loading inside the virtual-time budget."""
+    soup = BeautifulSoup(dom, "html.parser")
+    return soup.find("h1") and all(el.find("mjx-container") for el in soup.select(".math")) and not _console_errors(console)
+
+
 @pytest.fixture(scope="module")
 def rendered(site):
     def one(doc):
         page = site / f"{doc}.html"
-        r = chromium("--dump-dom", page.as_uri())
-        return doc, (page, r.stdout, [l for l in r.stderr.splitlines() if ":CONSOLE" in l])
+        for budget in ("20000", "60000"):  # a busy machine can starve one load: a second, longer try before judging
+            r = chromium("--dump-dom", f"--virtual-time-budget={budget}", page.as_uri())
+            console = [l for l in r.stderr.splitlines() if ":CONSOLE" in l]
+            if _complete(r.stdout, console):
+                break
+        return doc, (page, r.stdout, console)
     with ThreadPoolExecutor(2) as pool:
         return dict(pool.map(one, toc_files()))
 
@@ -133,9 +147,7 @@ def test_internal_links_resolve(site, rendered):
 
 
 def test_browser_console_has_no_errors(rendered):
-    bad = {doc: [l.split("CONSOLE", 1)[1][:200] for l in console
-                 if re.search(r"Uncaught|Error|Failed|error", l.split("CONSOLE", 1)[1])]
-           for doc, (_, _, console) in rendered.items()}
+    bad = {doc: _console_errors(console) for doc, (_, _, console) in rendered.items()}
     assert not {d: v for d, v in bad.items() if v}
 
 
@@ -144,5 +156,6 @@ def test_screenshot_of_a_chapter_is_kept(site):
     art.mkdir(parents=True, exist_ok=True)
     shot = art / "opamp_limiter.png"
     shot.unlink(missing_ok=True)
-    chromium("--window-size=1280,2400", f"--screenshot={shot}", (site / "book/an94002/opamp_limiter.html").as_uri())
+    chromium("--window-size=1280,2400", "--virtual-time-budget=20000", f"--screenshot={shot}",
+             (site / "book/an94002/opamp_limiter.html").as_uri())
     assert shot.exists() and shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000

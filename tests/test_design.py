@@ -267,3 +267,19 @@ def test_design_cli_unmeetable_spec_exits_3_with_what_can_be_met(tmp_path):
     assert out.returncode == 3 and "Traceback" not in out.stderr
     info = json.loads(out.stdout)["infeasible"]
     assert info["table"] == "commutation" and info["achievable"]["rpm_max_reliable"] == pytest.approx(9347.44, rel=1e-4)
+
+
+def test_bom_written_on_success_and_never_on_failure(tmp_path):
+    import csv
+
+    bom = tmp_path / "bom.csv"
+    out = _run(tmp_path, "[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n", "--bom", str(bom))
+    assert out.returncode == 0, out.stderr
+    rows = {r["reference"]: r for r in csv.DictReader(bom.open())}
+    assert float(rows["C3"]["value"]) == pytest.approx(56e-9)  # 22 uA x 10/3000 s / 1.4 V / 0.95 = 55.1 nF -> E12 56 nF
+    assert rows["C3"]["series"] == "E12" and "window" in rows["C3"]["reason"]
+    assert {"C3", "C4", "R7", "R9", "R_OSC"} <= set(rows)
+    bom.unlink()
+    for text, code in (("[commutation]\nrpm_max = 50000\n", 3), ("[commutation]\nrpm_min = -1\n", 2)):
+        out = _run(tmp_path, text, "--bom", str(bom))
+        assert out.returncode == code and not bom.exists() and not list(tmp_path.glob(".bom-*"))

@@ -15,7 +15,7 @@ import math
 import numpy as np
 
 from . import series, tolerance, validate
-from .examples import Example, Printed, TextErratum
+from .examples import Example, Printed, TextErratum, evaluate_all
 
 NOTE = "AN94002"
 
@@ -917,8 +917,7 @@ def examples_list() -> list[Example]:
 
 def examples(p: dict | None = None, chapter: str | None = None) -> list[dict]:
     """Every AN94002 example evaluated with ``p`` (default: the note's values)."""
-    p = DEFAULTS if p is None else p
-    return [e.evaluate(p, DEFAULTS) for e in examples_list() if chapter is None or e.chapter == chapter]
+    return evaluate_all(examples_list(), p, DEFAULTS, chapter)
 
 
 #: misprints and inconsistencies of AN94002 that are not numbers

@@ -133,6 +133,12 @@ class Example:
         }
 
 
+def evaluate_all(examples: list, params: dict | None, defaults: dict, chapter: str | None = None) -> list[dict]:
+    """Every example of a source evaluated with ``params`` (default: the source's own values)."""
+    params = defaults if params is None else params
+    return [e.evaluate(params, defaults) for e in examples if chapter is None or e.chapter == chapter]
+
+
 @dataclass(frozen=True)
 class TextErratum:
     """A misprint or inconsistency that is not a number: a wrong unit, a name used twice, a copied text."""

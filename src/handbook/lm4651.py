@@ -96,7 +96,7 @@ def t_junction(p_d, t_ambient, theta_sa, package="TF", theta_cs=0.2):
 
 import functools  # noqa: E402
 
-from .examples import Example, Printed, TextErratum  # noqa: E402
+from .examples import Example, Printed, TextErratum, evaluate_all  # noqa: E402
 
 NOTE = "LM4651/LM4652"
 EPS0_PF_PER_IN = 8.8541878128e-12 * 0.0254 * 1e12  # vacuum permittivity in pF/in (CODATA)
@@ -215,8 +215,7 @@ def examples_list() -> list[Example]:
 
 
 def examples(p: dict | None = None, chapter: str | None = None) -> list[dict]:
-    p = DEFAULTS if p is None else p
-    return [e.evaluate(p, DEFAULTS) for e in examples_list() if chapter is None or e.chapter == chapter]
+    return evaluate_all(examples_list(), p, DEFAULTS, chapter)
 
 
 def equations() -> list:

@@ -128,15 +128,10 @@ def check(spec: dict) -> dict:
 
 def run(spec: dict) -> dict:
     """All three designs. Raises InputError for bad input, Infeasible (with .table) for unmeetable specs."""
-    check(spec)
-    out = {}
-    for table, fn in (("commutation", design.design_commutation), ("current_limiter", design.design_current_limiter),
-                      ("class_d", design.design_class_d)):
-        try:
-            out[table] = fn(spec[table])
-        except design.Infeasible as exc:
-            exc.table = table
-            raise
+    out = run_each(spec)
+    for result in out.values():
+        if isinstance(result, design.Infeasible):
+            raise result
     return out
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import functools
 
 from . import an94002, series
-from .examples import Example, Printed, TextErratum
+from .examples import Example, Printed, TextErratum, evaluate_all
 
 NOTE = "TDA5341"
 
@@ -94,8 +94,7 @@ def examples_list() -> list[Example]:
 
 
 def examples(p: dict | None = None, chapter: str | None = None) -> list[dict]:
-    p = DEFAULTS if p is None else p
-    return [e.evaluate(p, DEFAULTS) for e in examples_list() if chapter is None or e.chapter == chapter]
+    return evaluate_all(examples_list(), p, DEFAULTS, chapter)
 
 
 def equations() -> list:
