@@ -106,6 +106,18 @@ def test_math_is_typeset(rendered):
     assert typeset > 100
 
 
+def test_tables_are_rendered(rendered):
+    """A Markdown table that failed to parse shows up as raw '|---|' text (a '|' inside a cell does that)."""
+    tables = 0
+    for doc, (_, dom, _) in rendered.items():
+        soup = BeautifulSoup(dom, "html.parser")
+        tables += len(soup.select("main table, article table"))
+        for el in soup.select("pre, code, script"):
+            el.decompose()
+        assert "|---|" not in soup.get_text().replace(" ", ""), f"{doc}: a Markdown table was left as text"
+    assert tables > 40
+
+
 def test_every_figure_is_on_its_page(rendered):
     for doc, (page, dom, _) in rendered.items():
         source = ROOT / f"{doc}.ipynb"

@@ -63,6 +63,11 @@ def show_equations(eqs, chapter: str) -> None:
             show_equation(e)
 
 
+def _cell(x) -> str:
+    """Text safe inside a Markdown table cell: a '|' would end the cell, a newline the row."""
+    return str(x).replace("|", "\\|").replace("\n", " ")
+
+
 def examples_table(rows: list[dict]) -> Markdown:
     """The status table of a chapter: printed, recomputed, status, why."""
     lines = ["| quantity | printed | recomputed | status | why |", "|---|---|---|---|---|"]
@@ -72,13 +77,13 @@ def examples_table(rows: list[dict]) -> Markdown:
         suffix = "" if printed_unit == "1" else " " + printed_unit
         printed = r["printed_text"].split(" ", 1)[0] + suffix
         shown = f"{r['computed'] / scale:.4g}{suffix}"
-        lines.append(f"| {r['quantity']} | {printed} | {shown} | {BADGE[r['status']]} | {r['reason']} |")
+        lines.append(f"| {_cell(r['quantity'])} | {_cell(printed)} | {shown} | {BADGE[r['status']]} | {_cell(r['reason'])} |")
     return Markdown("\n".join(lines))
 
 
 def table_md(header: list[str], rows: list[list]) -> Markdown:
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    lines = ["| " + " | ".join(_cell(h) for h in header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(_cell(c) for c in row) + " |" for row in rows]
     return Markdown("\n".join(lines))
 
 
