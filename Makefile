@@ -5,7 +5,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: book test notebooks browser clean
+.PHONY: book test test-unit test-notebooks notebooks browser clean
 
 $(STAMP): requirements.txt constraints.txt pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -17,8 +17,17 @@ book: $(STAMP)
 	rm -rf _build/.jupyter_cache
 	$(BIN)/jupyter-book build . -W -n --keep-going
 
+# Unit tests and notebooks run side by side (one core each), each pytest's output kept together.
+# The notebooks (nbval, one kernel per notebook) run in one process: a notebook's cells must never be
+# split across xdist workers (a cell would meet a fresh kernel: the intermittent failure of before).
 test: $(STAMP) browser
-	$(BIN)/python -m pytest
+	$(MAKE) --no-print-directory -j2 --output-sync=target test-unit test-notebooks
+
+test-unit: $(STAMP)
+	$(BIN)/python -m pytest tests
+
+test-notebooks: $(STAMP)
+	$(BIN)/python -m pytest book
 
 # The browser check (tests/test_browser.py) needs Debian's chromium; install it where the machine allows
 # (root with apt-get), otherwise that check reports itself skipped. No browser is downloaded.
