@@ -8,7 +8,6 @@ Specifications no component can meet raise :class:`~handbook.solvers.Infeasible`
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
@@ -493,12 +492,3 @@ def class_d_enumerate(s: dict):
             if ev["ok_thd"] and ev["ok_clip"] and ev["ok_heat"] and (best is None or ev["efficiency"] > best[0]):
                 best = (ev["efficiency"], r)
     return None if best is None else best[1]
-
-
-# ============================================================================================
-
-@dataclass
-class Design:
-    commutation: dict
-    current_limiter: dict
-    class_d: dict
