@@ -1,9 +1,10 @@
 """AN93008 and the TDA5341 excerpt: equations, numbers against hand calculations, statuses, errata."""
 import math
+import re
 
 import pytest
 
-from handbook import an93008, catalog, tda5341
+from handbook import an93008, book, catalog, tda5341
 
 A = 33 / 40.5  # R9 / (R8 + R9), by hand
 
@@ -67,3 +68,20 @@ def test_errata_cover_every_misprint_and_inconsistency_with_a_consequence():
     assert all(r["consequence"] for r in rows)
     assert {"an94002-eq2", "tda5341-capcdm"} <= ids  # reconstructed equations are listed
     assert "an94002-eq11-num" not in ids  # differs by rounded constants only
+
+
+def test_errata_by_source_document_and_as_book_entries():
+    rows = catalog.errata()
+    by_note = {n: catalog.errata(n) for n in ("AN94002", "AN93008", "TDA5341", "LM4651/LM4652", "TCA5600")}
+    assert sum(len(v) for v in by_note.values()) == len(rows)
+    assert all(r["note"] == n for n, v in by_note.items() for r in v)
+    with pytest.raises(ValueError, match="AN94002"):
+        catalog.errata("AN9400")
+    counts = book.errata_counts(rows).data.splitlines()
+    assert counts[-1].split("|")[-2].strip() == str(len(rows))
+    text = book.errata_md(by_note["AN94002"]).data
+    # the note's 22 uA against the TDA5144's 11 uA charge current, in the note's own unit
+    assert "printed 22 uA, recomputed 11 uA" in text
+    assert text.count("\n- ") + 1 == len(by_note["AN94002"])
+    assert "Evidence: " in text and "For a designer: " in text
+    assert not re.search(r"\.\.(\\|$)", text, re.M)  # one full stop at each sentence's end

@@ -81,6 +81,49 @@ def examples_table(rows: list[dict]) -> Markdown:
     return Markdown("\n".join(lines))
 
 
+def _printed_and_recomputed(r: dict) -> str:
+    """'printed 0.23 uF, recomputed 0.25 uF' in the printed value's own unit, or '' for non-numbers."""
+    if r["recomputed"] is None or not r["printed"]:
+        return ""
+    value, unit = r["printed"].split(" ", 1)
+    shown = f"{r['recomputed'] / UNIT_SCALES[unit][0]:.4g}" + ("" if unit == "1" else f" {unit}")
+    return f"printed {value}{'' if unit == '1' else ' ' + unit}, recomputed {shown}"
+
+
+#: the kinds of erratum (catalog.errata()), as the book names them
+ERRATA_KINDS = {"misprint": "misprint", "inconsistent": "inconsistent", "equation": "equation differs",
+                "reconstructed": "reconstructed equation", "text": "text erratum"}
+
+
+def errata_counts(rows: list[dict]) -> Markdown:
+    """How many errata of each kind each source document has, as a table."""
+    notes = list(dict.fromkeys(r["note"] for r in rows))
+    kinds = [k for k in ERRATA_KINDS if any(r["kind"] == k for r in rows)]
+    body = [[n] + [sum(r["note"] == n and r["kind"] == k for r in rows) for k in kinds]
+            + [sum(r["note"] == n for r in rows)] for n in notes]
+    body.append(["all"] + [sum(r["kind"] == k for r in rows) for k in kinds] + [len(rows)])
+    return table_md(["source"] + [ERRATA_KINDS[k] for k in kinds] + ["total"], body)
+
+
+def errata_md(rows: list[dict]) -> Markdown:
+    """Errata as a list of entries (a seven-column table does not fit a book page): what, where, the
+    numbers, the evidence and what a designer should do about it."""
+    if not rows:
+        return Markdown("No errata.")
+
+    def sentence(text: str) -> str:
+        text = str(text).strip()
+        return text if text.endswith((".", "!", "?")) else text + "."
+
+    items = []
+    for r in rows:
+        nums = _printed_and_recomputed(r)
+        head = f"**{r['what']}** ({r['source']}; *{ERRATA_KINDS[r['kind']]}*)" + (f": {nums}." if nums else "")
+        items.append(f"- {head}\\\n  Evidence: {sentence(r['evidence'])}\\\n"
+                     f"  For a designer: {sentence(r['consequence'])}")
+    return Markdown("\n".join(items))
+
+
 def table_md(header: list[str], rows: list[list]) -> Markdown:
     lines = ["| " + " | ".join(_cell(h) for h in header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(_cell(c) for c in row) + " |" for row in rows]

@@ -19,29 +19,37 @@ def text_errata():
     return [t for m in SOURCES for t in m.TEXT_ERRATA]
 
 
-def errata() -> list[dict]:
-    """Every misprint and inconsistency of every source, generated from the registries.
+def errata(note: str | None = None) -> list[dict]:
+    """Every misprint and inconsistency of every source, generated from the registries, source by source.
 
     Numbers whose status is misprint or inconsistent, equations whose printed form does not agree with
-    its derivation (other than by a rounded constant), and the textual errata.
+    its derivation (other than by a rounded constant), equations reconstructed from a garbled OCR, and
+    the textual errata. Each row names its source document in ``note`` (``an94002.NOTE`` ...); with
+    ``note`` given, only that document's rows.
     """
     rows = []
-    for r in examples():
-        if r["status"] in ("misprint", "inconsistent"):
-            rows.append({"id": r["id"], "source": r["source"], "kind": r["status"], "what": r["quantity"],
-                         "printed": r["printed_text"], "recomputed": r["computed"], "unit": r["unit"],
-                         "evidence": r["reason"], "consequence": r["consequence"]})
-    for e in equations():
-        s = e.summary()
-        if (not s["agrees"] and s["relation"] == "differs" and not e.rounded_constants) or not s["dimensions_ok"]:
-            rows.append({"id": s["id"], "source": s["source"], "kind": "equation", "what": s["title"],
-                         "printed": s["printed_latex"], "recomputed": None, "unit": "", "evidence": s["note"],
-                         "consequence": "see the chapter"})
-        elif e.reconstructed:
-            rows.append({"id": s["id"], "source": s["source"], "kind": "reconstructed", "what": s["title"],
-                         "printed": s["printed_latex"], "recomputed": None, "unit": "", "evidence": e.reconstructed,
-                         "consequence": "none once reconstructed"})
-    for t in text_errata():
-        rows.append({"id": t.id, "source": t.source, "kind": "text", "what": t.what, "printed": "", "recomputed": None,
-                     "unit": "", "evidence": t.evidence, "consequence": t.consequence})
+    for m in SOURCES:
+        if note is not None and m.NOTE != note:
+            continue
+        for r in m.examples():
+            if r["status"] in ("misprint", "inconsistent"):
+                rows.append({"id": r["id"], "note": m.NOTE, "source": r["source"], "kind": r["status"],
+                             "what": r["quantity"], "printed": r["printed_text"], "recomputed": r["computed"],
+                             "unit": r["unit"], "evidence": r["reason"], "consequence": r["consequence"]})
+        for e in m.equations():
+            s = e.summary()
+            if (not s["agrees"] and s["relation"] == "differs" and not e.rounded_constants) or not s["dimensions_ok"]:
+                rows.append({"id": s["id"], "note": m.NOTE, "source": s["source"], "kind": "equation",
+                             "what": s["title"], "printed": s["printed_latex"], "recomputed": None, "unit": "",
+                             "evidence": s["note"], "consequence": "see the chapter"})
+            elif e.reconstructed:
+                rows.append({"id": s["id"], "note": m.NOTE, "source": s["source"], "kind": "reconstructed",
+                             "what": s["title"], "printed": s["printed_latex"], "recomputed": None, "unit": "",
+                             "evidence": e.reconstructed, "consequence": "none once reconstructed"})
+        for t in m.TEXT_ERRATA:
+            rows.append({"id": t.id, "note": m.NOTE, "source": t.source, "kind": "text", "what": t.what,
+                         "printed": "", "recomputed": None, "unit": "", "evidence": t.evidence,
+                         "consequence": t.consequence})
+    if note is not None and not rows and note not in {m.NOTE for m in SOURCES}:
+        raise ValueError(f"errata: no source document {note!r}; known: {', '.join(m.NOTE for m in SOURCES)}")
     return rows
