@@ -18,8 +18,7 @@ book: $(STAMP)
 	$(BIN)/jupyter-book build . -W -n --keep-going
 
 # Unit tests and notebooks run side by side (one core each), each pytest's output kept together.
-# The notebooks (nbval, one kernel per notebook) run in one process: a notebook's cells must never be
-# split across xdist workers (a cell would meet a fresh kernel: the intermittent failure of before).
+# The notebooks (nbval, one kernel per notebook) run in one process, in order.
 test: $(STAMP) browser
 	$(MAKE) --no-print-directory -j2 --output-sync=target test-unit test-notebooks
 

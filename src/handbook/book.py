@@ -10,7 +10,7 @@ import matplotlib
 import matplotlib.pyplot as plt
 import numpy as np
 from IPython.display import Markdown, Math, display
-from matplotlib.ticker import EngFormatter  # noqa: F401  (used by the chapters as book.EngFormatter)
+from matplotlib.ticker import EngFormatter, Formatter, FuncFormatter  # EngFormatter: also book.EngFormatter
 
 from .examples import UNIT_SCALES
 from .registry import Equation
@@ -24,6 +24,9 @@ def setup() -> None:
     """The one setup call of every chapter: quiet warnings, deterministic plots."""
     warnings.filterwarnings("ignore", category=DeprecationWarning)
     warnings.filterwarnings("ignore", category=FutureWarning)
+    # matplotlib warns when its search for the "best" legend spot takes over 1 s: a statement about the
+    # machine's load, not the plot, which would make a cell's output depend on what else is running
+    warnings.filterwarnings("ignore", message="Creating legend with loc=\"best\" can be slow")
     np.set_printoptions(precision=4, suppress=True)
     matplotlib.rcParams.update({
         "figure.figsize": (7.0, 3.8), "figure.dpi": 100, "axes.grid": True, "grid.alpha": 0.3,
@@ -141,14 +144,36 @@ def glue_all(**values) -> None:
         glue(name, float(v) if isinstance(v, (int, float, np.floating, np.integer)) else v, display=False)
 
 
-def axes(xlabel: str, ylabel: str, xunit: str = "", yunit: str = ""):
+class _Minor(Formatter):
+    """Labels for the minor ticks of a log axis (2 and 5 of each decade) in the major ticks' style, only
+    when the axis spans two decades or less: a short log axis would otherwise carry one label or none."""
+
+    def __init__(self, major: Formatter):
+        self.major = major
+
+    def __call__(self, x, pos=None):
+        lo, hi = sorted(self.axis.get_view_interval())
+        if lo <= 0 or hi / lo > 100 or x <= 0:
+            return ""
+        mantissa = x / 10 ** np.floor(np.log10(x))
+        return self.major(x, pos) if np.isclose(mantissa, (2, 5), rtol=1e-6).any() else ""
+
+
+def axes(xlabel: str, ylabel: str, xunit: str = "", yunit: str = "", *, xlog: bool = False, ylog: bool = False):
+    """A figure with labelled axes: values with a unit get SI prefixes (EngFormatter), unitless values on
+    a log axis plain numbers (1000, not 10^3). The scale is set before the formatters: setting it
+    afterwards would put matplotlib's 10^n labels back."""
     fig, ax = plt.subplots()
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
-    if xunit:
-        ax.xaxis.set_major_formatter(EngFormatter(unit=xunit))
-    if yunit:
-        ax.yaxis.set_major_formatter(EngFormatter(unit=yunit))
+    for axis, set_scale, unit, log in ((ax.xaxis, ax.set_xscale, xunit, xlog), (ax.yaxis, ax.set_yscale, yunit, ylog)):
+        if log:
+            set_scale("log")
+        major = EngFormatter(unit=unit) if unit else FuncFormatter(lambda x, _: f"{x:g}") if log else None
+        if major is not None:
+            axis.set_major_formatter(major)
+            if log:
+                axis.set_minor_formatter(_Minor(major))
     return fig, ax
 
 
