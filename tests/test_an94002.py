@@ -208,6 +208,8 @@ def test_speed_range_of_the_board_capacitor():
     assert note.rpm_min_for(18e-9 * 0.95, 6, 22e-6, 1.4) == pytest.approx(10 * 22e-6 / (1.4 * 6 * 17.1e-9))
     assert note.rpm_max_for(18e-9 * 1.05, 6, 10.6e-6, 0.1) == pytest.approx(10 * 10.6e-6 / (0.1 * 6 * 18.9e-9))
     assert note.rpm_ratio(1.4, 0.1, 10.6e-6, 22e-6) == pytest.approx(14 * 10.6 / 22)
+    lo, hi = note.reliable_speed_range(18e-9, 0.05, 6, 10.6e-6, 22e-6, 1.4, 0.1)
+    assert lo == pytest.approx(1531.6, abs=0.1) and hi == pytest.approx(9347.4, abs=0.1)  # by hand, as above
 
 
 def test_cap_ti_waveform_times():

@@ -176,6 +176,13 @@ def rpm_max_for(cap, pole_pairs, i_charge_min, min_excursion):
     return 10.0 * i_charge_min / (min_excursion * validate.pole_pairs("pole_pairs", pole_pairs) * cap)
 
 
+def reliable_speed_range(cap, tolerance, pole_pairs, i_charge_min, i_charge_max, window, min_excursion):
+    """The speeds a capacitor covers in the worst case: the lowest at its small tolerance end with the
+    largest current (eq 5), the highest at its large end with the smallest current (eq 7)."""
+    return (rpm_min_for(cap * (1 - tolerance), pole_pairs, i_charge_max, window),
+            rpm_max_for(cap * (1 + tolerance), pole_pairs, i_charge_min, min_excursion))
+
+
 def rpm_ratio(window, min_excursion, i_charge_min, i_charge_max):
     """Eq 8: RPM_max / RPM_min for a capacitor sized exactly at the bound."""
     return window * i_charge_min / (min_excursion * i_charge_max)

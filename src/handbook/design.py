@@ -71,12 +71,13 @@ def commutation_verify(c: float, s: dict) -> dict:
     n, tol = s["pole_pairs"], s["tolerance"]
     swing_slow = an94002.excursion(c * (1 - tol), s["rpm_min"], n, s["i_charge_max"])
     swing_fast = an94002.excursion(c * (1 + tol), s["rpm_max"], n, s["i_charge_min"])
+    lo, hi = an94002.reliable_speed_range(c, tol, n, s["i_charge_min"], s["i_charge_max"], s["window"],
+                                          s["min_excursion"])
     return {
         "swing_at_rpm_min": swing_slow, "swing_at_rpm_max": swing_fast,
         "window_ok": swing_slow <= s["window"] * (1 + 1e-12),
         "noise_ok": swing_fast >= s["min_excursion"] * (1 - 1e-12),
-        "rpm_min_reliable": an94002.rpm_min_for(c * (1 - tol), n, s["i_charge_max"], s["window"]),
-        "rpm_max_reliable": an94002.rpm_max_for(c * (1 + tol), n, s["i_charge_min"], s["min_excursion"]),
+        "rpm_min_reliable": lo, "rpm_max_reliable": hi,
     }
 
 
