@@ -159,21 +159,27 @@ class _Minor(Formatter):
         return self.major(x, pos) if np.isclose(mantissa, (2, 5), rtol=1e-6).any() else ""
 
 
+def format_axis(ax, which: str, unit: str = "", log: bool = False) -> None:
+    """Scale and tick labels of one axis ("x" or "y"): values with a unit get SI prefixes (EngFormatter),
+    unitless values on a log axis plain numbers (1000, not 10^3). The scale is set before the formatters:
+    setting it afterwards would put matplotlib's 10^n labels back."""
+    axis = ax.xaxis if which == "x" else ax.yaxis
+    if log:
+        (ax.set_xscale if which == "x" else ax.set_yscale)("log")
+    major = EngFormatter(unit=unit) if unit else FuncFormatter(lambda x, _: f"{x:g}") if log else None
+    if major is not None:
+        axis.set_major_formatter(major)
+        if log:
+            axis.set_minor_formatter(_Minor(major))
+
+
 def axes(xlabel: str, ylabel: str, xunit: str = "", yunit: str = "", *, xlog: bool = False, ylog: bool = False):
-    """A figure with labelled axes: values with a unit get SI prefixes (EngFormatter), unitless values on
-    a log axis plain numbers (1000, not 10^3). The scale is set before the formatters: setting it
-    afterwards would put matplotlib's 10^n labels back."""
+    """A figure with labelled axes, formatted by format_axis."""
     fig, ax = plt.subplots()
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
-    for axis, set_scale, unit, log in ((ax.xaxis, ax.set_xscale, xunit, xlog), (ax.yaxis, ax.set_yscale, yunit, ylog)):
-        if log:
-            set_scale("log")
-        major = EngFormatter(unit=unit) if unit else FuncFormatter(lambda x, _: f"{x:g}") if log else None
-        if major is not None:
-            axis.set_major_formatter(major)
-            if log:
-                axis.set_minor_formatter(_Minor(major))
+    format_axis(ax, "x", xunit, xlog)
+    format_axis(ax, "y", yunit, ylog)
     return fig, ax
 
 

@@ -92,7 +92,7 @@ def class_d_sweep(result: dict, ambients=(25.0, 40.0, 50.0, 60.0)):
     axs[1].plot(f, [e["thd_n"] * 100 for e in ev])
     axs[1].axhline(s["thd_max"] * 100, color="C3", ls="--", lw=1, label="limit")
     axs[1].set_ylabel("THD+N at 10 W (%)")
-    axs[1].set_yscale("log")
+    book.format_axis(axs[1], "y", log=True)
     axs[1].legend(fontsize=8)
     for t_a in ambients:
         need = [lm4651.theta_sa_required(lm4651.losses(x, s["p_out"], s["r_load"])[0], t_a, s["package"], s["theta_cs"])
