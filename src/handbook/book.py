@@ -71,15 +71,19 @@ def _cell(x) -> str:
     return str(x).replace("|", "\\|").replace("\n", " ")
 
 
+def _in_printed_unit(printed_text: str, value: float) -> tuple[str, str]:
+    """A printed value ("0.23 uF") and a recomputed SI value, both shown in the printed unit (no unit
+    shown for a pure number): ("0.23 uF", "0.25 uF")."""
+    number, unit = printed_text.split(" ", 1)
+    suffix = "" if unit == "1" else " " + unit
+    return number + suffix, f"{value / UNIT_SCALES[unit][0]:.4g}{suffix}"
+
+
 def examples_table(rows: list[dict]) -> Markdown:
     """The status table of a chapter: printed, recomputed, status, why."""
     lines = ["| quantity | printed | recomputed | status | why |", "|---|---|---|---|---|"]
     for r in rows:
-        printed_unit = r["printed_text"].split(" ", 1)[1]
-        scale = UNIT_SCALES[printed_unit][0]
-        suffix = "" if printed_unit == "1" else " " + printed_unit
-        printed = r["printed_text"].split(" ", 1)[0] + suffix
-        shown = f"{r['computed'] / scale:.4g}{suffix}"
+        printed, shown = _in_printed_unit(r["printed_text"], r["computed"])
         lines.append(f"| {_cell(r['quantity'])} | {_cell(printed)} | {shown} | {BADGE[r['status']]} | {_cell(r['reason'])} |")
     return Markdown("\n".join(lines))
 
@@ -88,9 +92,8 @@ def _printed_and_recomputed(r: dict) -> str:
     """'printed 0.23 uF, recomputed 0.25 uF' in the printed value's own unit, or '' for non-numbers."""
     if r["recomputed"] is None or not r["printed"]:
         return ""
-    value, unit = r["printed"].split(" ", 1)
-    shown = f"{r['recomputed'] / UNIT_SCALES[unit][0]:.4g}" + ("" if unit == "1" else f" {unit}")
-    return f"printed {value}{'' if unit == '1' else ' ' + unit}, recomputed {shown}"
+    printed, shown = _in_printed_unit(r["printed"], r["recomputed"])
+    return f"printed {printed}, recomputed {shown}"
 
 
 #: the kinds of erratum (catalog.errata()), as the book names them

@@ -15,10 +15,6 @@ def examples():
     return [r for m in SOURCES for r in m.examples()]
 
 
-def text_errata():
-    return [t for m in SOURCES for t in m.TEXT_ERRATA]
-
-
 def errata(note: str | None = None) -> list[dict]:
     """Every misprint and inconsistency of every source, generated from the registries, source by source.
 
@@ -27,6 +23,9 @@ def errata(note: str | None = None) -> list[dict]:
     the textual errata. Each row names its source document in ``note`` (``an94002.NOTE`` ...); with
     ``note`` given, only that document's rows.
     """
+    known = [m.NOTE for m in SOURCES]
+    if note is not None and note not in known:
+        raise ValueError(f"errata: no source document {note!r}; known: {', '.join(known)}")
     rows = []
     for m in SOURCES:
         if note is not None and m.NOTE != note:
@@ -50,6 +49,4 @@ def errata(note: str | None = None) -> list[dict]:
             rows.append({"id": t.id, "note": m.NOTE, "source": t.source, "kind": "text", "what": t.what,
                          "printed": "", "recomputed": None, "unit": "", "evidence": t.evidence,
                          "consequence": t.consequence})
-    if note is not None and not rows and note not in {m.NOTE for m in SOURCES}:
-        raise ValueError(f"errata: no source document {note!r}; known: {', '.join(m.NOTE for m in SOURCES)}")
     return rows
