@@ -1,37 +1,17 @@
-"""Display helpers the chapters share: one setup call, equations as typeset math, status tables.
+"""Tables a person reads: claims with their status, errata, designs; values with engineering units.
 
 Everything shown is rounded and free of addresses or timings, so nbval can compare it exactly.
 """
 from __future__ import annotations
 
-import warnings
+from IPython.display import Markdown
+from matplotlib.ticker import EngFormatter
 
-import matplotlib
-import matplotlib.pyplot as plt
-import numpy as np
-from IPython.display import Markdown, Math, display
-from matplotlib.ticker import EngFormatter, Formatter, FuncFormatter  # EngFormatter: also book.EngFormatter
-
-from .examples import UNIT_SCALES
-from .registry import Equation
+from ..core.claim import UNIT_SCALES
 
 #: status -> short badge used in tables
 BADGE = {"exact": "exact", "rounding": "rounding", "misprint": "**misprint**",
          "inconsistent": "**inconsistent**", "n/a": "n/a"}
-
-
-def setup() -> None:
-    """The one setup call of every chapter: quiet warnings, deterministic plots."""
-    warnings.filterwarnings("ignore", category=DeprecationWarning)
-    warnings.filterwarnings("ignore", category=FutureWarning)
-    # matplotlib warns when its search for the "best" legend spot takes over 1 s: a statement about the
-    # machine's load, not the plot, which would make a cell's output depend on what else is running
-    warnings.filterwarnings("ignore", message="Creating legend with loc=\"best\" can be slow")
-    np.set_printoptions(precision=4, suppress=True)
-    matplotlib.rcParams.update({
-        "figure.figsize": (7.0, 3.8), "figure.dpi": 100, "axes.grid": True, "grid.alpha": 0.3,
-        "svg.hashsalt": "handbook", "axes.spines.top": False, "axes.spines.right": False,
-    })
 
 
 def eng(value: float, unit: str = "", digits: int = 4) -> str:
@@ -42,28 +22,6 @@ def eng(value: float, unit: str = "", digits: int = 4) -> str:
     if unit == "%":
         return f"{value * 100:g} %"
     return EngFormatter(unit=unit, places=None, sep=" ")(value)
-
-
-def _unit_of(unit: str) -> str:
-    return {"ohm": "Ω", "1": "", "F*rpm": "F·rpm", "1/K": "/K"}.get(unit, unit)
-
-
-def show_equation(eq: Equation) -> None:
-    """Printed form, derived form, and the verdict of the symbolic check."""
-    s = eq.summary()
-    display(Markdown(f"**{eq.title}** ({eq.source})  \nprinted:"))
-    display(Math(s["printed_latex"]))
-    display(Markdown(f"derived ({eq.law}):"))
-    display(Math(s["derived_latex"]))
-    dims = "dimensions consistent" if s["dimensions_ok"] else "**dimension error**"
-    verdict = "agrees" if s["agrees"] else "**differs**"
-    display(Markdown(f"*Check:* {verdict}; {dims}. {s['note']}"))
-
-
-def show_equations(eqs, chapter: str) -> None:
-    for e in eqs:
-        if e.chapter == chapter:
-            show_equation(e)
 
 
 def _cell(x) -> str:
@@ -108,7 +66,7 @@ def errata_counts(rows: list[dict]) -> Markdown:
     body = [[n] + [sum(r["note"] == n and r["kind"] == k for r in rows) for k in kinds]
             + [sum(r["note"] == n for r in rows)] for n in notes]
     body.append(["all"] + [sum(r["kind"] == k for r in rows) for k in kinds] + [len(rows)])
-    return table_md(["source"] + [ERRATA_KINDS[k] for k in kinds] + ["total"], body)
+    return table(["source"] + [ERRATA_KINDS[k] for k in kinds] + ["total"], body)
 
 
 def errata_md(rows: list[dict]) -> Markdown:
@@ -130,60 +88,12 @@ def errata_md(rows: list[dict]) -> Markdown:
     return Markdown("\n".join(items))
 
 
-def table_md(header: list[str], rows: list[list]) -> Markdown:
+def table(header: list[str], rows: list[list]) -> Markdown:
     lines = ["| " + " | ".join(_cell(h) for h in header) + " |", "|" + "---|" * len(header)]
     lines += ["| " + " | ".join(_cell(c) for c in row) + " |" for row in rows]
     return Markdown("\n".join(lines))
 
 
-table = table_md
-
-
-def glue_all(**values) -> None:
-    """Glue numbers for the prose (myst-nb), as plain Python floats so their repr is stable."""
-    from myst_nb import glue
-
-    for name, v in values.items():
-        glue(name, float(v) if isinstance(v, (int, float, np.floating, np.integer)) else v, display=False)
-
-
-class _Minor(Formatter):
-    """Labels for the minor ticks of a log axis (2 and 5 of each decade) in the major ticks' style, only
-    when the axis spans two decades or less: a short log axis would otherwise carry one label or none."""
-
-    def __init__(self, major: Formatter):
-        self.major = major
-
-    def __call__(self, x, pos=None):
-        lo, hi = sorted(self.axis.get_view_interval())
-        if lo <= 0 or hi / lo > 100 or x <= 0:
-            return ""
-        mantissa = x / 10 ** np.floor(np.log10(x))
-        return self.major(x, pos) if np.isclose(mantissa, (2, 5), rtol=1e-6).any() else ""
-
-
-def format_axis(ax, which: str, unit: str = "", log: bool = False) -> None:
-    """Scale and tick labels of one axis ("x" or "y"): values with a unit get SI prefixes (EngFormatter),
-    unitless values on a log axis plain numbers (1000, not 10^3). The scale is set before the formatters:
-    setting it afterwards would put matplotlib's 10^n labels back."""
-    axis = ax.xaxis if which == "x" else ax.yaxis
-    if log:
-        (ax.set_xscale if which == "x" else ax.set_yscale)("log")
-    major = EngFormatter(unit=unit) if unit else FuncFormatter(lambda x, _: f"{x:g}") if log else None
-    if major is not None:
-        axis.set_major_formatter(major)
-        if log:
-            axis.set_minor_formatter(_Minor(major))
-
-
-def axes(xlabel: str, ylabel: str, xunit: str = "", yunit: str = "", *, xlog: bool = False, ylog: bool = False):
-    """A figure with labelled axes, formatted by format_axis."""
-    fig, ax = plt.subplots()
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    format_axis(ax, "x", xunit, xlog)
-    format_axis(ax, "y", yunit, ylog)
-    return fig, ax
 
 
 def design_table(table: str, result) -> Markdown:
@@ -208,4 +118,4 @@ def design_table(table: str, result) -> Markdown:
         else:
             shown = str(v)
         rows.append([k, shown])
-    return table_md(["result", "value"], rows)
+    return table(["result", "value"], rows)

@@ -56,8 +56,3 @@ def stack_product(tols) -> tuple[float, float]:
     """The notes' stack-up: multiply (1 + t) for the high end; the low end is the product of (1 - t)."""
     tols = list(tols)
     return float(np.prod([1 - t for t in tols]) - 1), float(np.prod([1 + t for t in tols]) - 1)
-
-
-def stack_sum(tols) -> float:
-    """Linear worst-case sum of relative tolerances (first-order)."""
-    return float(sum(tols))

@@ -1,7 +1,15 @@
-"""Numeric-example registry: a printed number, its recomputation, and a status (no sympy needed)."""
+"""Numeric claims: a number a source prints, its recomputation, and a status (no sympy needed).
+
+A :class:`Claim` records where a number is printed, the number as printed (:class:`Printed`), how to
+recompute it from the source's parameters, and why its status is what it is. The parameters a claim
+depends on are not written by hand: :meth:`Claim.evaluate` runs the recomputation on a mapping that
+records every key it reads, and compares with the printed number only when none of those differs
+from the source's own value.
+"""
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from decimal import Decimal
 from typing import Callable
@@ -21,9 +29,6 @@ UNIT_SCALES: dict[str, tuple[float, str]] = {
 }
 
 
-STATUSES = ("exact", "rounding", "misprint", "inconsistent", "n/a")
-
-
 @dataclass(frozen=True)
 class Printed:
     """A number as the note prints it: the digits (as text) and the unit it is printed in."""
@@ -31,6 +36,10 @@ class Printed:
     text: str
     unit: str
     sig: int | None = None  # significant figures, where the context fixes them ("200 kHz" in a table: 3)
+
+    def __post_init__(self):
+        if self.unit not in UNIT_SCALES:
+            raise ValueError(f"Printed({self.text!r}, {self.unit!r}): unknown unit; known: {', '.join(UNIT_SCALES)}")
 
     @property
     def si(self) -> float:
@@ -84,59 +93,67 @@ def classify(printed: float, half_unit: float, computed: float, *, relation: str
     return "misprint" if basis == "note" else "inconsistent"
 
 
-@dataclass
-class Example:
+class Recorder(Mapping):
+    """A read-only view of the parameters that remembers every key read through it.
+
+    Spreading it (``{**p}``) or copying it reads every key: a conservative record.
+    """
+
+    def __init__(self, params: Mapping):
+        self._params = params
+        self.read: set[str] = set()
+
+    def __getitem__(self, key):
+        value = self._params[key]
+        self.read.add(key)
+        return value
+
+    def __iter__(self):
+        return iter(self._params)
+
+    def __len__(self):
+        return len(self._params)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Claim:
+    """A number printed in a source, with its recomputation from the source's parameters."""
+
     id: str
-    source: str
+    where: str  # document, section, equation or table
     quantity: str
     printed: Printed
-    compute: Callable[[dict], float]  # params -> computed value in SI
+    compute: Callable[[Mapping], float]  # parameters -> recomputed value in SI
     reason: str  # one line: why the status is what it is
-    depends: tuple[str, ...] = ()  # parameter names the computation reads
+    chapter: str
     relation: str = "="
-    basis: str = "note"  # "note" or the other source the recomputation rests on
-    via_rounded: Callable[[dict], float] | None = None
-    chapter: str = ""
+    basis: str = "note"  # "note", or the other document the recomputation rests on
+    via_rounded: Callable[[Mapping], float] | None = None
     consequence: str = ""  # for a misprint or an inconsistency: what it means for a designer
-    printed_tex: str = ""  # the printed right side as LaTeX, where sympy would re-arrange it
 
     @property
     def unit(self) -> str:
         return UNIT_SCALES[self.printed.unit][1]
 
-    def evaluate(self, params: dict, defaults: dict) -> dict:
-        """Recompute with ``params``; compare with the print only where the inputs are the note's."""
-        computed = float(self.compute(params))
-        changed = [k for k in self.depends if params.get(k) != defaults.get(k)]
+    def evaluate(self, params: Mapping, defaults: Mapping) -> dict:
+        """Recompute with ``params``; compare with the print only where the inputs read are the note's."""
+        seen = Recorder(params)
+        computed = float(self.compute(seen))
+        via = None if self.via_rounded is None else float(self.via_rounded(seen))
+        changed = sorted(k for k in seen.read if params[k] != defaults.get(k))
         if changed:
             status = "n/a"
             reason = "inputs differ from the note's (" + ", ".join(changed) + "): no printed value to compare"
         else:
-            via = None if self.via_rounded is None else float(self.via_rounded(params))
             status = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation,
                               basis=self.basis, via_rounded=via)
             reason = self.reason
         return {
-            "id": self.id,
-            "source": self.source,
-            "chapter": self.chapter,
-            "quantity": self.quantity,
-            "unit": self.unit,
-            "printed": self.printed.si,
-            "printed_text": str(self.printed),
-            "computed": computed,
-            "relation": self.relation,
-            "basis": self.basis,
-            "status": status,
-            "reason": reason,
-            "consequence": self.consequence,
+            "id": self.id, "source": self.where, "chapter": self.chapter, "quantity": self.quantity,
+            "unit": self.unit, "printed": self.printed.si, "printed_text": str(self.printed),
+            "computed": computed, "relation": self.relation, "basis": self.basis, "status": status,
+            "reason": reason, "consequence": self.consequence, "depends": sorted(seen.read),
         }
-
-
-def evaluate_all(examples: list, params: dict | None, defaults: dict, chapter: str | None = None) -> list[dict]:
-    """Every example of a source evaluated with ``params`` (default: the source's own values)."""
-    params = defaults if params is None else params
-    return [e.evaluate(params, defaults) for e in examples if chapter is None or e.chapter == chapter]
 
 
 @dataclass(frozen=True)

@@ -1,12 +1,12 @@
 """TCA5600 flyback coil: eq 1 to 6a derived, the worked example and the application check by hand."""
 import pytest
 
-from handbook import tca5600
-from handbook.validate import InputError
+from handbook.sources import tca5600
+from handbook.core import InputError
 
 
 def test_every_equation_agrees_with_its_derivation():
-    for e in tca5600.equations():
+    for e in tca5600.SOURCE.equations():
         c = e.check()
         assert c.agrees and c.dims_ok, e.id
 

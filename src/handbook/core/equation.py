@@ -1,4 +1,4 @@
-"""Equation and numeric-example registries shared by every chapter.
+"""Equation records: a printed equation, its derivation from circuit laws, and their symbolic check.
 
 An :class:`Equation` holds an app note's equation three ways:
 
@@ -15,18 +15,18 @@ compares it with the derived form symbolically: the difference simplifies to zer
 simplifies to a pure number (a rounded constant), or the two differ structurally, and each case is
 recorded. The dimensions of both sides are checked with ``sympy.physics.units``.
 
-The numeric-example registry (:class:`Example`, :func:`classify`) lives in :mod:`handbook.examples`,
-which does not import sympy, and is re-exported here.
+The check is computed once per record (the record is frozen) and, through
+:mod:`handbook.core.checks_cache`, stored on disk keyed on the code that defines it.
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from decimal import Decimal
 
 import sympy as sp
 from sympy.physics import units as u
 
-from .examples import STATUSES, UNIT_SCALES, Example, Printed, classify  # noqa: F401  (re-exported)
 from sympy.physics.units.systems.si import SI, dimsys_SI
 
 # ----------------------------------------------------------------------------------------------
@@ -78,7 +78,7 @@ _UNIT_TEX = {"second": r"\mathrm{s}", "farad/1000000": r"\mu\mathrm{F}", "farad"
 # ----------------------------------------------------------------------------------------------
 # equations
 
-@dataclass
+@dataclass(frozen=True)
 class Check:
     """Outcome of comparing a printed form with its derivation."""
 
@@ -90,7 +90,7 @@ class Check:
     dims_note: str
 
 
-@dataclass
+@dataclass(frozen=True, kw_only=True, eq=False)
 class Equation:
     id: str
     source: str  # note, section, equation number
@@ -108,7 +108,6 @@ class Equation:
     note: str = ""  # how they differ, what was reconstructed, what a symbol means
     reconstructed: str = ""  # what the OCR garbled and how the form was rebuilt
     ocr_form: sp.Expr | None = None  # the OCR text taken literally, where it differs
-    chapter: str = ""
     printed_tex: str = ""  # the printed right side as LaTeX, where sympy would re-arrange it
     rounded_constants: bool = False  # printed with rounded numbers substituted: differs by rounding only
 
@@ -128,6 +127,11 @@ class Equation:
         return expr.subs({s: s * unit for s, unit in self.units.items()}, simultaneous=True)
 
     def check(self) -> Check:
+        """The comparison of the printed and derived forms (computed once, then remembered)."""
+        return self._check
+
+    @functools.cached_property
+    def _check(self) -> Check:
         printed = self.printed_physical()
         derived = self.derived_at_values()
         # Dimensions: both sides must carry the left side's dimension.
@@ -202,4 +206,6 @@ class Equation:
             "dimensions_ok": bool(c.dims_ok),
             "law": self.law,
             "note": note,
+            "reconstructed": self.reconstructed,
+            "rounded_constants": self.rounded_constants,
         }

@@ -1,0 +1,56 @@
+"""The equations' checks stored on disk, keyed on the code that defines them.
+
+Building a source's equations and simplifying every printed-minus-derived difference takes seconds;
+the command line should answer in well under one. The summaries are stored as JSON under
+``$HANDBOOK_CACHE`` (default ``~/.cache/handbook``), in a file named by a hash of the source files
+that define the equations, of the checking code itself and of the sympy version: any edit to them
+makes a new key, so a stale check is never read. Where the cache cannot be written, the checks are
+simply computed.
+"""
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import json
+import os
+from pathlib import Path
+
+_CHECK_CODE = ("handbook.core.equation", "handbook.core.checks_cache")
+
+
+def _module_bytes(name: str) -> bytes:
+    spec = importlib.util.find_spec(name)
+    if spec is None or spec.origin is None:
+        raise ModuleNotFoundError(name)
+    return Path(spec.origin).read_bytes()
+
+
+def key(source) -> str:
+    """A hash of everything a source's equation summaries depend on."""
+    from importlib.metadata import version
+
+    h = hashlib.sha256(f"sympy {version('sympy')}\n{source.name}\n".encode())
+    for name in (*source.equation_modules, *_CHECK_CODE):
+        h.update(name.encode() + b"\0" + _module_bytes(name) + b"\0")
+    return h.hexdigest()[:20]
+
+
+def cache_dir() -> Path:
+    return Path(os.environ.get("HANDBOOK_CACHE") or Path.home() / ".cache" / "handbook")
+
+
+def cached_summaries(source) -> list[dict]:
+    path = cache_dir() / f"equations-{source.name.replace('/', '_')}-{key(source)}.json"
+    try:
+        return json.loads(path.read_text())
+    except (OSError, ValueError):
+        pass
+    rows = [e.summary() for e in source.equations()]
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_text(json.dumps(rows))
+        os.replace(tmp, path)
+    except OSError:
+        pass
+    return rows

@@ -1,0 +1,144 @@
+"""The contract of a source document: its parameters, outside facts, equations, claims and errata.
+
+Every package under ``handbook.sources`` builds one :class:`Source`; the catalog, the errata chapter,
+the command line and the chapters all go through it, so every document behaves the same way:
+``params()`` refuses unknown names with the near match and checks each value against its
+:class:`Param`, ``evaluate()`` recomputes every claim, ``equations()`` builds the symbolic registry
+once per process and ``equation_summaries()`` once per change of the code that defines it.
+"""
+from __future__ import annotations
+
+import difflib
+import functools
+import math
+import numbers
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+from .claim import Claim, TextErratum
+from .validate import InputError
+
+
+@dataclass(frozen=True, kw_only=True)
+class Param:
+    """One input of a source's calculations: its default (the source's own value) and what it means."""
+
+    name: str
+    default: Any
+    unit: str  # SI unit ("V", "F", "ohm", "1" for a ratio or fraction, "" for a name or a count)
+    meaning: str
+    low: float | None = None  # accepted range (inclusive)
+    high: float | None = None
+    cite: str = ""  # where the default comes from, when not the source itself
+    choices: tuple = ()  # for a name: the accepted values
+
+    def check(self, value, prefix: str = ""):
+        """``value`` if it is acceptable, else an :class:`InputError` naming the key, value and range."""
+        name = prefix + self.name
+        if self.choices:
+            if value not in self.choices:
+                raise InputError(f"{name} = {value!r}: use one of {', '.join(map(repr, self.choices))}")
+            return value
+        if isinstance(self.default, str):
+            if not isinstance(value, str):
+                raise InputError(f"{name} = {value!r}: expected a name in quotes, e.g. {self.default!r}")
+            return value
+        if isinstance(value, bool) or not isinstance(value, numbers.Real):
+            raise InputError(f"{name} = {value!r}: expected a number ({self.meaning})")
+        if not math.isfinite(value):
+            raise InputError(f"{name} = {value!r}: expected a finite number ({self.meaning})")
+        if isinstance(self.default, int) and value != int(value):
+            raise InputError(f"{name} = {value!r}: expected a whole number ({self.meaning})")
+        if (self.low is not None and value < self.low) or (self.high is not None and value > self.high):
+            unit = "" if self.unit in ("", "1") else " " + self.unit
+            raise InputError(f"{name} = {value!r}{unit} is out of range: use a value from {self.low:g} to "
+                             f"{self.high:g}{unit} ({self.meaning})")
+        return int(value) if isinstance(self.default, int) else value
+
+
+@dataclass(frozen=True)
+class Fact:
+    """A figure a source relies on without printing it, with where it was read (datasheet_facts.md)."""
+
+    value: Any
+    cite: str
+
+
+def unknown_key_message(kind: str, key: str, known) -> str:
+    """'unknown AN94002 parameter 'rpm' (did you mean 'rpm_min'?)' or the list of known names."""
+    near = difflib.get_close_matches(key, list(known), n=1)
+    hint = f" (did you mean {near[0]!r}?)" if near else f"; known: {', '.join(known)}"
+    return f"unknown {kind} {key!r}{hint}"
+
+
+@dataclass(frozen=True, kw_only=True)
+class Source:
+    """One source document and everything the handbook records about it."""
+
+    name: str  # "AN94002": the key of the errata and the catalog
+    title: str
+    parameters: tuple[Param, ...]
+    facts: Mapping[str, Fact] = field(default_factory=dict)
+    build_equations: Callable[[], list] = lambda: []  # builds the Equation records (imports sympy)
+    equation_modules: tuple[str, ...] = ()  # module files whose code defines the equations (cache key)
+    build_claims: Callable[[], list[Claim]] = lambda: []
+    errata: tuple[TextErratum, ...] = ()
+
+    # -- parameters -------------------------------------------------------------------------
+    @property
+    def defaults(self) -> dict:
+        return {p.name: p.default for p in self.parameters}
+
+    def params(self, **overrides) -> dict:
+        """The source's own values with ``overrides`` applied; unknown names are refused with the
+        near match, and every value given is checked against its range."""
+        by_name = {p.name: p for p in self.parameters}
+        for key, value in overrides.items():
+            if key not in by_name:
+                raise InputError(unknown_key_message(f"{self.name} parameter", key, by_name))
+            by_name[key].check(value)
+        return {**self.defaults, **overrides}
+
+    # -- claims ------------------------------------------------------------------------------
+    def claims(self) -> list[Claim]:
+        return _claims(self)
+
+    def evaluate(self, p: Mapping | None = None, chapter: str | None = None) -> list[dict]:
+        """Every claim recomputed with ``p`` (default: the source's own values)."""
+        defaults = self.defaults
+        p = defaults if p is None else p
+        return [c.evaluate(p, defaults) for c in self.claims() if chapter is None or c.chapter == chapter]
+
+    # -- equations ---------------------------------------------------------------------------
+    def equations(self) -> list:
+        return list(_equations(self))
+
+    def equation(self, eq_id: str):
+        for e in _equations(self):
+            if e.id == eq_id:
+                return e
+        raise KeyError(unknown_key_message(f"{self.name} equation", eq_id, [e.id for e in _equations(self)]))
+
+    def equation_summaries(self) -> list[dict]:
+        """Every equation's summary (forms, agreement, dimensions), from the on-disk cache when the code
+        that defines the equations has not changed since it was stored."""
+        from .checks_cache import cached_summaries
+
+        return cached_summaries(self)
+
+    def __hash__(self):
+        return hash(self.name)
+
+
+@functools.lru_cache(maxsize=None)
+def _claims(source: Source) -> tuple:
+    claims = tuple(source.build_claims())
+    ids = [c.id for c in claims]
+    if len(set(ids)) != len(ids):
+        raise ValueError(f"{source.name}: duplicate claim ids")
+    return claims
+
+
+@functools.lru_cache(maxsize=None)
+def _equations(source: Source) -> tuple:
+    return tuple(source.build_equations())

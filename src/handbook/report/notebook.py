@@ -1,0 +1,42 @@
+"""What every chapter's first cells call: one setup, glued values, equations shown as typeset math."""
+from __future__ import annotations
+
+import warnings
+
+import matplotlib
+import numpy as np
+from IPython.display import Markdown, Math, display
+
+
+def setup() -> None:
+    """The one setup call of every chapter: quiet warnings, deterministic plots."""
+    warnings.filterwarnings("ignore", category=DeprecationWarning)
+    warnings.filterwarnings("ignore", category=FutureWarning)
+    # matplotlib warns when its search for the "best" legend spot takes over 1 s: a statement about the
+    # machine's load, not the plot, which would make a cell's output depend on what else is running
+    warnings.filterwarnings("ignore", message="Creating legend with loc=\"best\" can be slow")
+    np.set_printoptions(precision=4, suppress=True)
+    matplotlib.rcParams.update({
+        "figure.figsize": (7.0, 3.8), "figure.dpi": 100, "axes.grid": True, "grid.alpha": 0.3,
+        "svg.hashsalt": "handbook", "axes.spines.top": False, "axes.spines.right": False,
+    })
+
+
+def show_equation(eq) -> None:
+    """Printed form, derived form, and the verdict of the symbolic check."""
+    s = eq.summary()
+    display(Markdown(f"**{eq.title}** ({eq.source})  \nprinted:"))
+    display(Math(s["printed_latex"]))
+    display(Markdown(f"derived ({eq.law}):"))
+    display(Math(s["derived_latex"]))
+    dims = "dimensions consistent" if s["dimensions_ok"] else "**dimension error**"
+    verdict = "agrees" if s["agrees"] else "**differs**"
+    display(Markdown(f"*Check:* {verdict}; {dims}. {s['note']}"))
+
+
+def glue_all(**values) -> None:
+    """Glue numbers for the prose (myst-nb), as plain Python floats so their repr is stable."""
+    from myst_nb import glue
+
+    for name, v in values.items():
+        glue(name, float(v) if isinstance(v, (int, float, np.floating, np.integer)) else v, display=False)

@@ -1,0 +1,256 @@
+"""AN94002 circuit functions: start oscillator, commutation delay, watchdog, speed control, limiters,
+decoupling. Every function takes and returns SI values (rotational speed in rpm, as the note states it)."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...core import series, tolerance, validate
+
+# ----------------------------------------------------------------------------------------------
+# 2.1.1 start oscillator
+
+def oscillation_frequency(torque_constant, current, pole_pairs, inertia):
+    """Eq 2: rotor oscillation about a detent, f = sqrt(K_t I p / J) / (2 pi)."""
+    validate.positive("torque_constant", torque_constant, "N m/A")
+    validate.positive("start_current", current, "A")
+    validate.pole_pairs("pole_pairs", pole_pairs)
+    validate.positive("inertia", inertia, "kg m^2")
+    return math.sqrt(torque_constant * current * pole_pairs / inertia) / (2 * math.pi)
+
+
+def start_period(cap, i_cap=2e-6, v_low=0.05, v_high=2.2):
+    """Eq 1 from charge balance: charge and discharge at I over the window, t = 2 C dV / I."""
+    validate.ordered("v_st_low", v_low, "v_st_high", v_high)
+    return 2 * cap * (v_high - v_low) / validate.positive("i_cap_st", i_cap, "A")
+
+
+def cap_st_for(t_start, i_cap=2e-6, v_low=0.05, v_high=2.2):
+    validate.ordered("v_st_low", v_low, "v_st_high", v_high)
+    return validate.positive("t_start", t_start, "s") * i_cap / (2 * (v_high - v_low))
+
+
+# ----------------------------------------------------------------------------------------------
+# 2.1.2 adaptive commutation delay
+
+def t_cycle(rpm, pole_pairs):
+    """Eq 3: one electrical cycle, 60 / (RPM n) seconds."""
+    return 60.0 / (validate.positive("rpm", rpm, "rpm") * validate.pole_pairs("pole_pairs", pole_pairs))
+
+
+def t_com(rpm, pole_pairs):
+    """Eq 4: six commutations per electrical cycle, 10 / (RPM n) seconds."""
+    return t_cycle(rpm, pole_pairs) / 6
+
+
+def excursion(cap, rpm, pole_pairs, i_charge):
+    """Voltage swing on CAP-CD: charged for one commutation interval, dV = I t_com / C."""
+    return i_charge * t_com(rpm, pole_pairs) / validate.positive("cap_cd", cap, "F")
+
+
+def cap_cd_min(rpm_min, pole_pairs, i_charge_max, window):
+    """Eq 5/6: the smallest CAP-CD whose swing at rpm_min fits the window with the largest current."""
+    validate.positive("i_charge_max", i_charge_max, "A")
+    return i_charge_max * t_com(rpm_min, pole_pairs) / validate.positive("window", window, "V")
+
+
+def rpm_min_for(cap, pole_pairs, i_charge_max, window):
+    """The lowest speed at which a capacitor's swing still fits the window (eq 5 solved for RPM)."""
+    return 10.0 * i_charge_max / (validate.positive("window", window, "V") * pole_pairs * cap)
+
+
+def rpm_max_for(cap, pole_pairs, i_charge_min, min_excursion):
+    """Eq 7: the highest speed at which the swing with the smallest current stays above the noise floor."""
+    validate.positive("min_excursion", min_excursion, "V")
+    return 10.0 * i_charge_min / (min_excursion * validate.pole_pairs("pole_pairs", pole_pairs) * cap)
+
+
+def reliable_speed_range(cap, tolerance, pole_pairs, i_charge_min, i_charge_max, window, min_excursion):
+    """The speeds a capacitor covers in the worst case: the lowest at its small tolerance end with the
+    largest current (eq 5), the highest at its large end with the smallest current (eq 7)."""
+    return (rpm_min_for(cap * (1 - tolerance), pole_pairs, i_charge_max, window),
+            rpm_max_for(cap * (1 + tolerance), pole_pairs, i_charge_min, min_excursion))
+
+
+def rpm_ratio(window, min_excursion, i_charge_min, i_charge_max):
+    """Eq 8: RPM_max / RPM_min for a capacitor sized exactly at the bound."""
+    return window * i_charge_min / (min_excursion * i_charge_max)
+
+
+def choose_cap_cd(rpm_min, pole_pairs, i_charge_max, window, tolerance=0.05, series_name="E12"):
+    """The smallest series value that meets the bound at its low tolerance end.
+
+    Returns (chosen, bound, {value: reason}) where the dict explains each smaller series value that fails.
+    """
+    bound = cap_cd_min(rpm_min, pole_pairs, i_charge_max, window)
+    chosen = series.smallest_meeting(series_name, bound, validate.fraction("cap_tolerance", tolerance))
+    rejected = {}
+    for v in series.values(series_name, chosen / 3, chosen * 0.999):
+        if v * (1 - tolerance) < bound <= v:
+            rejected[v] = (f"meets the nominal bound {bound * 1e9:.2f} nF but not at -{tolerance:.0%}: "
+                           f"{v * (1 - tolerance) * 1e9:.2f} nF")
+        elif v < bound:
+            rejected[v] = f"below the bound {bound * 1e9:.2f} nF"
+    return chosen, bound, rejected
+
+
+# ----------------------------------------------------------------------------------------------
+# 2.1.3 watchdog
+
+def cap_ti_for(t_wd, i_wd=5e-6, v_low=0.3, v_high=2.2):
+    """Eq 9: C = I t_wd / dV (charge from 0.3 V to 2.2 V at 5 uA)."""
+    validate.ordered("v_ti_low", v_low, "v_ti_high", v_high)
+    return i_wd * validate.positive("t_wd", t_wd, "s") / (v_high - v_low)
+
+
+def watchdog_time(cap, i_wd=5e-6, v_low=0.3, v_high=2.2):
+    validate.ordered("v_ti_low", v_low, "v_ti_high", v_high)
+    return validate.positive("cap_ti", cap, "F") * (v_high - v_low) / validate.positive("i_wd", i_wd, "A")
+
+
+def cap_ti_waveform(cap, p: dict, stalled: bool = True):
+    """Piecewise-linear CAP-TI voltage for one watchdog cycle (times in s, volts).
+
+    Fast charge 0.2 -> 0.3 V at 57 uA, watchdog charge 0.3 -> 2.2 V at 5 uA, then discharge at
+    28 uA back to 0.2 V. With ``stalled`` False the EMF recovers halfway up the watchdog ramp.
+    """
+    v0, v1, v2 = p["v_ti_start"], p["v_ti_low"], p["v_ti_high"]
+    t1 = cap * (v1 - v0) / p["i_ti_fast"]
+    top = v2 if stalled else v1 + 0.5 * (v2 - v1)
+    t2 = t1 + cap * (top - v1) / p["i_wd"]
+    t3 = t2 + cap * (top - v0) / p["i_ti_discharge"]
+    return np.array([0.0, t1, t2, t3]), np.array([v0, v1, top, v0])
+
+
+# ----------------------------------------------------------------------------------------------
+# 2.2 speed control
+
+def v_mot_max(v_supply, supply_tolerance, v_drop_min):
+    """Highest controllable V_mot: the lowest supply less the drop R7 and T1 need."""
+    return validate.positive("v_supply", v_supply, "V") * (1 - validate.fraction("supply_tolerance", supply_tolerance)) - v_drop_min
+
+
+def v_in_for(v_mot, r3, r4):
+    """Eq 10: the OTA holds AMPIN+ = AMPIN-, so V_in equals the divided V_mot."""
+    return v_mot * validate.positive("r4", r4, "ohm") / (validate.positive("r3", r3, "ohm") + r4)
+
+
+def r3_for(v_mot, v_in, r4):
+    """Eq 10 solved for R3."""
+    validate.positive("v_in", v_in, "V")
+    if v_mot <= v_in:
+        raise validate.InputError(f"v_mot = {v_mot:g} V must exceed v_in = {v_in:g} V for a divider")
+    return r4 * (v_mot / v_in - 1)
+
+
+def v_in_range(p: dict) -> tuple[float, float]:
+    """V_in for the lowest running V_mot and for the highest controllable V_mot."""
+    top = v_mot_max(p["v_supply"], p["supply_tolerance"], p["v_drop_min"])
+    return v_in_for(p["v_mot_min"], p["r3"], p["r4"]), v_in_for(top, p["r3"], p["r4"])
+
+
+def ota_input_max(p: dict) -> float:
+    """The OTA inputs may not exceed V_P - 1.7 V (TDA5144 datasheet, quoted by the note)."""
+    return p["v_p_min"] - p["ota_headroom"]
+
+
+# ----------------------------------------------------------------------------------------------
+# 2.3 one-transistor limiter
+
+def r7_for_limit(i_limit, v_be=0.8):
+    return validate.positive("v_be", v_be, "V") / validate.positive("i_limit", i_limit, "A")
+
+
+def limit_current(r7, temperature, v_be=0.8, v_be_tc=-2e-3, t_ref=25.0):
+    """I_lim(T) = V_be(T) / R7 with V_be(T) = V_be + TC (T - T_ref)."""
+    return (v_be + v_be_tc * (np.asarray(temperature, dtype=float) - t_ref)) / validate.positive("r7", r7, "ohm")
+
+
+def limit_tc(v_be=0.8, v_be_tc=-2e-3):
+    """Relative temperature coefficient of the limit current: (dV_be/dT) / V_be, per kelvin."""
+    return v_be_tc / validate.positive("v_be", v_be, "V")
+
+
+# ----------------------------------------------------------------------------------------------
+# 2.4 op-amp limiter (zener-bridged level shift)
+
+def factor_a(r12, r13):
+    """A = R13 / (R12 + R13): the level-shift divider's gain (eq 11)."""
+    return r13 / (r12 + r13)
+
+
+def factor_b(r9, r10, r11):
+    """B = R11 / (R9 + R10 + R11): the reference divider (eq 12)."""
+    return r11 / (r9 + r10 + r11)
+
+
+def level_shift(v_d1, r12, r13, v_cs=0.0):
+    """V_s - V_+ from eq 11: how far below the supply the op-amp inputs sit."""
+    return v_d1 - factor_a(r12, r13) * (v_d1 - v_cs)
+
+
+def v_cs_trip(v_d1, r9, r10, r11, r12, r13, offset=0.0):
+    """The sense voltage at which the op-amp trips: eq 13 with the input offset referred back.
+
+    V_+ - V_- = V_os at the trip point; with eq 11 and 12 that gives
+    V_cs = V_D1 (1 - B/A) - V_os / A. Works elementwise on numpy arrays.
+    """
+    a = factor_a(r12, r13)
+    return v_d1 * (1 - factor_b(r9, r10, r11) / a) - offset / a
+
+
+def v_cs_matched(v_d1, r9, r10, r11):
+    """Eq 14: V_cs = V_D1 R9 / (R9 + R10 + R11), valid only for R10 = R12 and R11 = R13 exactly."""
+    return v_d1 * r9 / (r9 + r10 + r11)
+
+
+def r9_for(v_cs, v_d1, r10, r11):
+    """Eq 14 solved for R9."""
+    validate.positive("v_cs", v_cs, "V")
+    if v_cs >= v_d1:
+        raise validate.InputError(f"v_cs = {v_cs:g} V must be below the zener voltage {v_d1:g} V")
+    return v_cs * (r10 + r11) / (v_d1 - v_cs)
+
+
+def trip_worst_case(p: dict, r9: float | None = None, include=("resistors", "zener", "offset")):
+    """Exact worst case of the trip voltage over every tolerance corner (see tolerance.corners)."""
+    r9 = r9_for(p["v_cs"], p["v_zener"], p["r10"], p["r11"]) if r9 is None else r9
+    tr = validate.fraction("resistor_tolerance", p["resistor_tolerance"])
+    nominal = dict(v_d1=p["v_zener"], r9=r9, r10=p["r10"], r11=p["r11"], r12=p["r12"], r13=p["r13"], offset=0.0)
+    spread = {}
+    if "resistors" in include:
+        spread.update({k: tolerance.symmetric(nominal[k], tr) for k in ("r9", "r10", "r11", "r12", "r13")})
+    if "zener" in include:
+        spread["v_d1"] = tolerance.symmetric(p["v_zener"], validate.fraction("zener_tolerance", p["zener_tolerance"]))
+    if "offset" in include:
+        spread["offset"] = (-p["offset"], p["offset"])
+    return tolerance.corners(v_cs_trip, nominal, spread)
+
+
+def note_stack_up(p: dict) -> dict:
+    """The note's tolerance arithmetic: offset, zener and resistor percentages multiplied."""
+    a = factor_a(p["r12"], p["r13"])
+    t_off = p["offset"] / (a * p["v_cs"])
+    tols = [t_off, p["zener_tolerance"], 0.05]
+    low, high = tolerance.stack_product(tols)
+    return {"offset": t_off, "zener": p["zener_tolerance"], "resistors": 0.05, "high": high, "low": low}
+
+
+# ----------------------------------------------------------------------------------------------
+# 3 decoupling
+
+def c_min_for_impedance(z_max, f):
+    """An ideal capacitor's |Z| = 1/(2 pi f C) stays below z_max for C >= 1/(2 pi f z_max)."""
+    return 1.0 / (2 * math.pi * validate.positive("f_decoupling", f, "Hz") * validate.positive("z_max", z_max, "ohm"))
+
+
+def impedance(f, c, esr=0.0, esl=0.0):
+    """|Z| of a real capacitor, series R-L-C: sqrt(ESR^2 + (wL - 1/(wC))^2)."""
+    w = 2 * np.pi * np.asarray(f, dtype=float)
+    return np.sqrt(esr ** 2 + (w * esl - 1 / (w * c)) ** 2)
+
+
+def esl_max(z_max, f):
+    """The largest series inductance for which wL alone stays below z_max."""
+    return z_max / (2 * math.pi * f)
