@@ -1,18 +1,24 @@
-"""Every source module's equations, numeric examples and textual errata, in book order."""
+"""Every source document's claims, equations and errata, in book order (the registry and errata chapters
+and the command line read them from here)."""
 from __future__ import annotations
 
-from . import an93008, an94002, lm4651, tca5600, tda5341
-
-#: source modules in book order; each offers equations(), examples() and TEXT_ERRATA
-SOURCES = (an94002, an93008, tda5341, lm4651, tca5600)
+from .sources import ORDER
 
 
-def equations():
-    return [e for m in SOURCES for e in m.equations()]
+def sources() -> tuple:
+    from . import sources as pkg
+
+    return pkg.SOURCES
 
 
-def examples():
-    return [r for m in SOURCES for r in m.examples()]
+def equation_summaries() -> list[dict]:
+    """Every equation's summary, from the on-disk check cache where it is current."""
+    return [{**s, "note_name": src.name} for src in sources() for s in src.equation_summaries()]
+
+
+def claims() -> list[dict]:
+    """Every printed number of every source, recomputed with the source's own values."""
+    return [r for src in sources() for r in src.evaluate()]
 
 
 def errata(note: str | None = None) -> list[dict]:
@@ -20,33 +26,39 @@ def errata(note: str | None = None) -> list[dict]:
 
     Numbers whose status is misprint or inconsistent, equations whose printed form does not agree with
     its derivation (other than by a rounded constant), equations reconstructed from a garbled OCR, and
-    the textual errata. Each row names its source document in ``note`` (``an94002.NOTE`` ...); with
-    ``note`` given, only that document's rows.
+    the textual errata. Each row names its source document in ``note``; with ``note`` given, only that
+    document's rows.
     """
-    known = [m.NOTE for m in SOURCES]
+    known = [s.name for s in sources()]
     if note is not None and note not in known:
         raise ValueError(f"errata: no source document {note!r}; known: {', '.join(known)}")
     rows = []
-    for m in SOURCES:
-        if note is not None and m.NOTE != note:
-            continue
-        for r in m.examples():
-            if r["status"] in ("misprint", "inconsistent"):
-                rows.append({"id": r["id"], "note": m.NOTE, "source": r["source"], "kind": r["status"],
-                             "what": r["quantity"], "printed": r["printed_text"], "recomputed": r["computed"],
-                             "unit": r["unit"], "evidence": r["reason"], "consequence": r["consequence"]})
-        for e in m.equations():
-            s = e.summary()
-            if (not s["agrees"] and s["relation"] == "differs" and not e.rounded_constants) or not s["dimensions_ok"]:
-                rows.append({"id": s["id"], "note": m.NOTE, "source": s["source"], "kind": "equation",
-                             "what": s["title"], "printed": s["printed_latex"], "recomputed": None, "unit": "",
-                             "evidence": s["note"], "consequence": "see the chapter"})
-            elif e.reconstructed:
-                rows.append({"id": s["id"], "note": m.NOTE, "source": s["source"], "kind": "reconstructed",
-                             "what": s["title"], "printed": s["printed_latex"], "recomputed": None, "unit": "",
-                             "evidence": e.reconstructed, "consequence": "none once reconstructed"})
-        for t in m.TEXT_ERRATA:
-            rows.append({"id": t.id, "note": m.NOTE, "source": t.source, "kind": "text", "what": t.what,
-                         "printed": "", "recomputed": None, "unit": "", "evidence": t.evidence,
-                         "consequence": t.consequence})
+    for src in sources():
+        if note is None or src.name == note:
+            rows += _errata_of(src)
     return rows
+
+
+def _errata_of(src) -> list[dict]:
+    rows = []
+    for r in src.evaluate():
+        if r["status"] in ("misprint", "inconsistent"):
+            rows.append({"id": r["id"], "note": src.name, "source": r["source"], "kind": r["status"],
+                         "what": r["quantity"], "printed": r["printed_text"], "recomputed": r["computed"],
+                         "unit": r["unit"], "evidence": r["reason"], "consequence": r["consequence"]})
+    for s in src.equation_summaries():
+        base = {"id": s["id"], "note": src.name, "source": s["source"], "what": s["title"],
+                "printed": s["printed_latex"], "recomputed": None, "unit": ""}
+        if (not s["agrees"] and s["relation"] == "differs" and not s["rounded_constants"]) or not s["dimensions_ok"]:
+            rows.append({**base, "kind": "equation", "evidence": s["note"], "consequence": "see the chapter"})
+        elif s["reconstructed"]:
+            rows.append({**base, "kind": "reconstructed", "evidence": s["reconstructed"],
+                         "consequence": "none once reconstructed"})
+    for t in src.errata:
+        rows.append({"id": t.id, "note": src.name, "source": t.source, "kind": "text", "what": t.what,
+                     "printed": "", "recomputed": None, "unit": "", "evidence": t.evidence,
+                     "consequence": t.consequence})
+    return rows
+
+
+__all__ = ["ORDER", "claims", "equation_summaries", "errata", "sources"]

@@ -22,7 +22,7 @@ def _table(rows: list[dict], cols: list[tuple[str, str, int]]) -> str:
 
 
 def cmd_examples(args) -> int:
-    rows = catalog.examples()
+    rows = catalog.claims()
     if args.json:
         keys = ("id", "source", "quantity", "unit", "printed", "computed", "status", "reason", "relation", "basis")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
@@ -33,7 +33,7 @@ def cmd_examples(args) -> int:
 
 
 def cmd_equations(args) -> int:
-    rows = [e.summary() for e in catalog.equations()]
+    rows = catalog.equation_summaries()
     if args.json:
         keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "dimensions_ok", "law", "note")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
@@ -44,9 +44,10 @@ def cmd_equations(args) -> int:
 
 
 def cmd_design(args) -> int:
-    from . import spec as specmod
-    from .solvers import Infeasible
-    from .validate import InputError
+    from .core import InputError
+    from .design import bom
+    from .design import spec as specmod
+    from .design.solvers import Infeasible
 
     try:
         spec = specmod.load(args.spec)
@@ -55,7 +56,7 @@ def cmd_design(args) -> int:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     except Infeasible as exc:
-        table = getattr(exc, "table", "")
+        table = exc.table
         print(f"cannot be met [{table}]: {exc}", file=sys.stderr)
         if args.json:
             print(json.dumps({"infeasible": {"table": table, "message": str(exc), "achievable": exc.achievable}},
@@ -64,7 +65,7 @@ def cmd_design(args) -> int:
     out = specmod.summary(result)
     if args.bom:
         try:
-            specmod.write_bom(specmod.bom(result), args.bom)
+            bom.write(bom.rows(result), args.bom)
         except OSError as exc:
             print(f"error: cannot write {args.bom}: {exc.strerror}", file=sys.stderr)
             return 2
@@ -78,6 +79,21 @@ def cmd_design(args) -> int:
     return 0
 
 
+def _spec_help() -> str:
+    """The specification's keys, from the one schema (handbook.design.schema)."""
+    from .design.schema import key_rows
+
+    lines = ["SPEC.toml keys (SI units; a missing table or key takes the notes' value):"]
+    table = None
+    for t, key, default, unit, meaning in key_rows():
+        if t != table:
+            lines.append(f"  [{t}]")
+            table = t
+        lines.append(f"    {key} = {default}  ({unit + ', ' if unit not in ('', '1') else ''}{meaning})")
+    lines.append("exit codes: 0 designed, 2 invalid input, 3 a valid spec nothing can meet")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m handbook", description=__doc__)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -87,7 +103,8 @@ def main(argv=None) -> int:
     p = sub.add_parser("equations", help="every equation: printed and derived forms, agreement")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_equations)
-    p = sub.add_parser("design", help="choose CAP-CD, R7/R9 and the class-D switching frequency for a spec")
+    p = sub.add_parser("design", help="choose CAP-CD, R7/R9 and the class-D switching frequency for a spec",
+                       epilog=_spec_help(), formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("spec", help="TOML file with optional [commutation], [current_limiter], [class_d] tables")
     p.add_argument("--json", action="store_true", help="one JSON object, SI units")
     p.add_argument("--bom", metavar="FILE.csv", help="also write a bill of materials (written only on success)")

@@ -27,8 +27,9 @@ class Param:
     default: Any
     unit: str  # SI unit ("V", "F", "ohm", "1" for a ratio or fraction, "" for a name or a count)
     meaning: str
-    low: float | None = None  # accepted range (inclusive)
+    low: float | None = None  # accepted range (inclusive, but see low_open)
     high: float | None = None
+    low_open: bool = False  # the value must exceed ``low`` (a positive quantity: low=0, low_open=True)
     cite: str = ""  # where the default comes from, when not the source itself
     choices: tuple = ()  # for a name: the accepted values
 
@@ -49,11 +50,28 @@ class Param:
             raise InputError(f"{name} = {value!r}: expected a finite number ({self.meaning})")
         if isinstance(self.default, int) and value != int(value):
             raise InputError(f"{name} = {value!r}: expected a whole number ({self.meaning})")
-        if (self.low is not None and value < self.low) or (self.high is not None and value > self.high):
-            unit = "" if self.unit in ("", "1") else " " + self.unit
-            raise InputError(f"{name} = {value!r}{unit} is out of range: use a value from {self.low:g} to "
-                             f"{self.high:g}{unit} ({self.meaning})")
+        if self.low is not None and (value <= self.low if self.low_open else value < self.low) or (
+                self.high is not None and value > self.high):
+            raise InputError(f"{name} = {value!r}{self.unit_text} is out of range: use a value {self.range_text} "
+                             f"({self.meaning})")
         return int(value) if isinstance(self.default, int) else value
+
+    @property
+    def unit_text(self) -> str:
+        return "" if self.unit in ("", "1") else " " + self.unit
+
+    @property
+    def range_text(self) -> str:
+        """'> 0 and <= 1e+06 rpm', 'from 0 to 0.1 V', or the choices."""
+        if self.choices:
+            return "one of " + ", ".join(map(repr, self.choices))
+        if self.low is None and self.high is None:
+            return "(any)"
+        lo = None if self.low is None else (f"> {self.low:g}" if self.low_open else f">= {self.low:g}")
+        hi = None if self.high is None else f"<= {self.high:g}"
+        if lo and hi and not self.low_open:
+            return f"from {self.low:g} to {self.high:g}{self.unit_text}"
+        return " and ".join(x for x in (lo, hi) if x) + self.unit_text
 
 
 @dataclass(frozen=True)

@@ -96,26 +96,24 @@ def table(header: list[str], rows: list[list]) -> Markdown:
 
 
 
-def design_table(table: str, result) -> Markdown:
-    """One design's results as a table, or what can be met when nothing can."""
-    from .solvers import Infeasible
-    from .spec import OUTPUT_KEYS
+def design_table(table_name: str, result) -> Markdown:
+    """One design's results as a table (values with units), or what can be met when nothing can."""
+    from ..design.schema import OUTPUTS
+    from ..design.solvers import Infeasible
 
     if isinstance(result, Infeasible):
         extra = "; ".join(f"{k} = {v:.4g}" if isinstance(v, float) else f"{k} = {v}" for k, v in result.achievable.items())
-        return Markdown(f"**Cannot be met** (`{table}`): {result}  \nWhat can be met: {extra}")
-    units = {"cap_cd": "F", "cap_dc": "F", "r7": "Ω", "r9": "Ω", "r_osc": "Ω", "i_trip_min": "A", "i_trip_max": "A",
-             "i_trip_nominal": "A", "p_r7": "W", "v_cs_nominal": "V", "f_sw": "Hz", "p_dissipation": "W", "p_clip": "W"}
+        return Markdown(f"**Cannot be met** (`{table_name}`): {result}  \nWhat can be met: {extra}")
     rows = []
-    for k in OUTPUT_KEYS[table]:
-        v = result[k]
-        if k in units:
-            shown = eng(v, units[k])
-        elif k in ("efficiency", "thd_n", "noise_margin", "margin_low", "margin_high"):
+    for out in OUTPUTS[table_name]:
+        v = getattr(result, out.key)
+        if out.unit == "%":
             shown = f"{v:.2%}"
+        elif out.unit in ("F", "ohm", "A", "W", "V", "Hz"):
+            shown = eng(v, out.unit.replace("ohm", "Ω"))
         elif isinstance(v, float):
             shown = f"{v:.4g}"
         else:
             shown = str(v)
-        rows.append([k, shown])
+        rows.append([out.key, shown])
     return table(["result", "value"], rows)

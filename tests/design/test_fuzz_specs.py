@@ -9,10 +9,12 @@ import numpy as np
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from handbook import design, spec
-from handbook.solvers import Infeasible
-from handbook.validate import InputError
-from test_design import _corners_vcs
+from oracles import corners_vcs
+
+from handbook.core import InputError
+from handbook.design import class_d, commutation, spec
+from handbook.design.schema import TABLES
+from handbook.design.solvers import Infeasible
 
 SANE = {
     "commutation": {"pole_pairs": st.integers(1, 16), "rpm_min": st.floats(100, 5000), "rpm_max": st.floats(500, 30000),
@@ -57,18 +59,18 @@ def specs(draw):
 
 def _reverify(result):
     c = result["commutation"]
-    chk = design.commutation_verify(c["cap_cd"], c["spec"])
+    chk = commutation.verify(c.cap_cd, c.spec)
     assert chk["window_ok"] and chk["noise_ok"]
     lim = result["current_limiter"]
-    s = lim["spec"]
-    lo, hi = _corners_vcs(np.array([lim["r9"]]), s)
-    assert lo[0] / (lim["r7"] * (1 + s["r7_tolerance"])) >= s["i_no_trip"] * (1 - 1e-9)
-    assert hi[0] / (lim["r7"] * (1 - s["r7_tolerance"])) <= s["i_must_trip"] * (1 + 1e-9)
+    s = lim.spec
+    lo, hi = corners_vcs(np.array([lim.r9]), s)
+    assert lo[0] / (lim.r7 * (1 + s["r7_tolerance"])) >= s["i_no_trip"] * (1 - 1e-9)
+    assert hi[0] / (lim.r7 * (1 - s["r7_tolerance"])) <= s["i_must_trip"] * (1 + 1e-9)
     cd = result["class_d"]
-    ev = design.class_d_evaluate(cd["f_sw"], cd["spec"])
+    ev = class_d.evaluate(cd.f_sw, cd.spec)
     assert ev["ok_thd"] and ev["ok_clip"] and ev["ok_heat"]
     for table in result.values():
-        for v in table.values():
+        for v in table.summary().values():
             assert not (isinstance(v, float) and not math.isfinite(v))
 
 
@@ -82,6 +84,6 @@ def test_every_spec_ends_in_a_verified_design_or_a_clear_error(data):
         assert any(f"{t}." in msg or f"[{t}" in msg or t in msg for t in ("commutation", "current_limiter", "class_d", "clas_d")), msg
         return
     except Infeasible as exc:
-        assert str(exc) and exc.achievable and exc.table in spec.TABLES
+        assert str(exc) and exc.achievable and exc.table in TABLES
         return
     _reverify(result)

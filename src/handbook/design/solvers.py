@@ -12,17 +12,18 @@ IPOPT_OPTIONS = {"ipopt.print_level": 0, "ipopt.sb": "yes", "print_time": False,
 
 
 class Infeasible(Exception):
-    """A valid specification that no component choice meets; ``achievable`` says what can be met."""
+    """A valid specification that no component choice meets: ``table`` names the design, ``achievable``
+    says what can be met."""
 
-    def __init__(self, message: str, achievable: dict):
+    def __init__(self, table: str, message: str, achievable: dict):
         super().__init__(message)
+        self.table = table
         self.achievable = achievable
 
 
 @dataclass
 class Solution:
     x: np.ndarray
-    f: float
     multipliers: np.ndarray  # one per constraint (IPOPT's lam_g)
     names: list[str]
     success: bool
@@ -43,5 +44,5 @@ def minimise(f, x, constraints: list[tuple[str, object, float, float]], x0, lbx,
     solver = ca.nlpsol("design", "ipopt", {"x": x, "f": f, "g": g}, IPOPT_OPTIONS)
     r = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=[c[2] for c in constraints], ubg=[c[3] for c in constraints])
     stats = solver.stats()
-    return Solution(np.array(r["x"]).ravel(), float(r["f"]), np.array(r["lam_g"]).ravel(), names,
+    return Solution(np.array(r["x"]).ravel(), np.array(r["lam_g"]).ravel(), names,
                     bool(stats["success"]))

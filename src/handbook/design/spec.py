@@ -1,0 +1,98 @@
+"""Design specifications: a TOML file with optional tables [commutation], [current_limiter], [class_d].
+
+Everything is checked before any computation, from the one schema (:mod:`handbook.design.schema`):
+unknown tables and keys (with the near match; a key written outside any table is told which table it
+belongs in), types, finiteness and ranges (a charge current of 22 instead of 22e-6 is out of range),
+then each design's limits that contradict each other. A missing table or key takes the notes' values,
+so an empty file designs the notes' own examples. All values are in SI units.
+"""
+from __future__ import annotations
+
+import difflib
+import tomllib
+from pathlib import Path
+
+from ..core import InputError
+from ..core.source import unknown_key_message
+from . import class_d, commutation, current_limiter
+from .schema import TABLES
+from .solvers import Infeasible
+
+#: table -> the design module that checks and solves it
+DESIGNS = {"commutation": commutation, "current_limiter": current_limiter, "class_d": class_d}
+
+
+def _table_of(key: str) -> str | None:
+    return next((t for t, params in TABLES.items() if any(p.name == key for p in params)), None)
+
+
+def parse(data: dict) -> dict:
+    """Checked spec: {table: {key: value}} with every table present (missing keys left to the defaults)."""
+    if not isinstance(data, dict):
+        raise InputError("the specification must be a TOML document with tables")
+    out = {t: {} for t in TABLES}
+    for table, body in data.items():
+        if table not in TABLES:
+            home = _table_of(table)
+            if home is not None:
+                raise InputError(f"{table} = {body!r} is written outside any table: put it under [{home}]")
+            near = difflib.get_close_matches(table, TABLES, n=1)
+            raise InputError(f"unknown table [{table}]" + (f": did you mean [{near[0]}]?" if near else
+                                                            f": use {', '.join('[' + t + ']' for t in TABLES)}"))
+        if not isinstance(body, dict):
+            raise InputError(f"{table} must be a table ([{table}]), not a value")
+        params = {p.name: p for p in TABLES[table]}
+        for key, value in body.items():
+            if key not in params:
+                near = difflib.get_close_matches(key, params, n=1)
+                raise InputError(f"unknown key {table}.{key}" + (f": did you mean {table}.{near[0]}?" if near else
+                                                                 f": known keys are {', '.join(params)}"))
+            out[table][key] = params[key].check(value, f"{table}.")
+    return out
+
+
+def load(path: str | Path) -> dict:
+    try:
+        text = Path(path).read_bytes()
+    except OSError as exc:
+        raise InputError(f"cannot read {path}: {exc.strerror}") from None
+    try:
+        data = tomllib.loads(text.decode("utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise InputError(f"{path} is not valid TOML: {exc}") from None
+    return parse(data)
+
+
+def check(spec: dict) -> dict:
+    """Every table completed with the defaults and checked (ranges and contradictions) before any solver."""
+    return {t: DESIGNS[t].checked(spec.get(t, {})) for t in DESIGNS}
+
+
+def run_each(spec: dict) -> dict:
+    """Each design on its own: {table: its Result, or the Infeasible saying what can be met}."""
+    checked = check(spec)
+    out = {}
+    for table, module in DESIGNS.items():
+        try:
+            out[table] = module.design(checked[table])
+        except Infeasible as exc:
+            out[table] = exc
+    return out
+
+
+def run(spec: dict) -> dict:
+    """All three designs. Raises InputError for bad input, Infeasible for the first unmeetable table."""
+    out = run_each(spec)
+    for result in out.values():
+        if isinstance(result, Infeasible):
+            raise result
+    return out
+
+
+def summary(result: dict) -> dict:
+    """{table: {output key: SI value}} for the JSON output."""
+    return {t: r.summary() for t, r in result.items()}
+
+
+__all__ = ["DESIGNS", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each", "summary",
+           "unknown_key_message"]
