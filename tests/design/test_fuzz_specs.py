@@ -9,12 +9,12 @@ import numpy as np
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from oracles import corners_vcs
-
 from handbook.core import InputError
 from handbook.design import class_d, commutation, spec
 from handbook.design.schema import TABLES
 from handbook.design.solvers import Infeasible
+
+from oracles import corners_vcs
 
 SANE = {
     "commutation": {"pole_pairs": st.integers(1, 16), "rpm_min": st.floats(100, 5000), "rpm_max": st.floats(500, 30000),
@@ -81,7 +81,8 @@ def test_every_spec_ends_in_a_verified_design_or_a_clear_error(data):
         result = spec.run(spec.parse(data))
     except InputError as exc:
         msg = str(exc)
-        assert any(f"{t}." in msg or f"[{t}" in msg or t in msg for t in ("commutation", "current_limiter", "class_d", "clas_d")), msg
+        tables = ("commutation", "current_limiter", "class_d", "clas_d")
+        assert any(f"{t}." in msg or f"[{t}" in msg or t in msg for t in tables), msg
         return
     except Infeasible as exc:
         assert str(exc) and exc.achievable and exc.table in TABLES

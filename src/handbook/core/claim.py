@@ -9,10 +9,9 @@ from the source's own value.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from decimal import Decimal
-from typing import Callable
 
 #: printed unit names -> (SI scale factor, SI unit name used in the JSON output)
 UNIT_SCALES: dict[str, tuple[float, str]] = {

@@ -26,7 +26,6 @@ from decimal import Decimal
 
 import sympy as sp
 from sympy.physics import units as u
-
 from sympy.physics.units.systems.si import SI, dimsys_SI
 
 # ----------------------------------------------------------------------------------------------

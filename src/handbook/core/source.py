@@ -12,8 +12,9 @@ import difflib
 import functools
 import math
 import numbers
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping
+from typing import Any
 
 from .claim import Claim, TextErratum
 from .validate import InputError
@@ -148,7 +149,7 @@ class Source:
         return hash(self.name)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _claims(source: Source) -> tuple:
     claims = tuple(source.build_claims())
     ids = [c.id for c in claims]
@@ -157,6 +158,6 @@ def _claims(source: Source) -> tuple:
     return claims
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _equations(source: Source) -> tuple:
     return tuple(source.build_equations())

@@ -144,3 +144,12 @@ def key_rows() -> list[tuple[str, str, str, str, str]]:
     """(table, key, default, unit, meaning) for every key: the README table and the help read this."""
     return [(t, p.name, "—" if p.default is None else repr(p.default), p.unit, p.meaning)
             for t, params in TABLES.items() for p in params]
+
+
+def markdown_table() -> str:
+    """The README's table of keys, rendered from this schema (a test keeps the README in step)."""
+    lines = ["| table | key | default | unit | meaning |", "|---|---|---|---|---|"]
+    for t, key, default, unit, meaning in key_rows():
+        shown = default if default == "—" else f"`{default}`"
+        lines.append(f"| `{t}` | `{key}` | {shown} | {unit} | {meaning} |")
+    return "\n".join(lines)

@@ -1,11 +1,13 @@
-"""The status logic, printed-number parsing, and the equation checks of the registry."""
+"""Printed-number parsing, the status logic, and the equation record's symbolic check."""
+import dataclasses
 import math
 
 import pytest
 import sympy as sp
 from sympy.physics import units as u
 
-from handbook.registry import Equation, Printed, classify, latex
+from handbook.core import Printed, classify
+from handbook.core.equation import Equation, latex
 
 
 @pytest.mark.parametrize("text,unit,si,half", [
@@ -91,11 +93,18 @@ def test_hidden_unit_constant_is_made_explicit():
                   units={c: u.farad, i: u.ampere, dv: u.volt},
                   values={i: 2 * u.ampere / 10 ** 6, dv: sp.Rational("2.15") * u.volt}, law="I t = C dV")
     assert eq.check().agrees
-    eq.scales = {c_uf: c / u.farad}  # pretend the constant were per farad: off by 10^6
-    assert eq.check().factor == sp.Integer(10) ** -6
+    per_farad = dataclasses.replace(eq, scales={c_uf: c / u.farad})  # as if the constant were per farad
+    assert per_farad.check().factor == sp.Integer(10) ** -6
 
 
 def test_latex_shows_decimal_constants_as_printed():
     x = sp.Symbol("x")
     assert latex(sp.Rational("2.15") * x) == "2.15 x"
     assert latex(sp.sqrt(x) / 2) == r"\frac{\sqrt{x}}{2}"
+
+
+def test_an_equation_is_frozen_and_checks_once():
+    eq = _divider_equation(lambda v, a, b: v / (1 + a / b))
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        eq.law = "other"
+    assert eq.check() is eq.check()  # computed once, then remembered
