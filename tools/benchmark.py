@@ -19,7 +19,9 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import minimize
 
-from handbook import design, lm4651
+from handbook.design import class_d, commutation, current_limiter
+from handbook.design.schema import defaults
+from handbook.sources.lm4651 import circuit as lm4651
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -34,7 +36,7 @@ def timed(fn, repeat=20):
 
 
 def scipy_commutation():
-    s = design.COMMUTATION_DEFAULTS
+    s = defaults("commutation")
     t_slow, t_fast = 10 / (s["rpm_min"] * s["pole_pairs"]), 10 / (s["rpm_max"] * s["pole_pairs"])
     cons = [{"type": "ineq", "fun": lambda x: 1 - s["i_charge_max"] * t_slow / (x[0] * 1e-9 * 0.95) / s["window"]},
             {"type": "ineq", "fun": lambda x: s["i_charge_min"] * t_fast / (x[0] * 1e-9 * 1.05) / s["min_excursion"] - 1}]
@@ -42,10 +44,10 @@ def scipy_commutation():
 
 
 def scipy_limiter():
-    s = design._limiter_checked({})
+    s = current_limiter.checked({})
 
     def cur(x):
-        return design.trip_currents(math.exp(x[0]), math.exp(x[1]), s)
+        return current_limiter.trip_currents(math.exp(x[0]), math.exp(x[1]), s)
     cons = [{"type": "ineq", "fun": lambda x: cur(x)[0] / s["i_no_trip"] - 1},
             {"type": "ineq", "fun": lambda x: 1 - cur(x)[1] / s["i_must_trip"]}]
     b = [(math.log(s["r7_min"]), math.log(s["r7_max"])), (math.log(s["r9_min"]), math.log(s["r9_max"]))]
@@ -54,7 +56,7 @@ def scipy_limiter():
 
 
 def scipy_class_d():
-    s = design._class_d_checked({})
+    s = class_d.checked({})
     p = lambda x: lm4651.p_switch(x[0] * 1e3, s["p_out"]) + lm4651.p_conduction(s["p_out"], s["r_load"])  # noqa: E731
     cons = [{"type": "ineq", "fun": lambda x: 1 - lm4651.thd_n(x[0] * 1e3) / s["thd_max"]},
             {"type": "ineq", "fun": lambda x: lm4651.p_clip(x[0] * 1e3, s["r_load"], s["supply"]) / s["p_out"] - 1}]
@@ -73,9 +75,9 @@ def main():
             cli.append(time.perf_counter() - t)
     rows = {}
     for name, fn, enum, sp in (
-            ("commutation", design.design_commutation, lambda: design.commutation_enumerate({}), scipy_commutation),
-            ("current_limiter", design.design_current_limiter, lambda: design.limiter_enumerate({}), scipy_limiter),
-            ("class_d", design.design_class_d, lambda: design.class_d_enumerate({}), scipy_class_d)):
+            ("commutation", commutation.design, lambda: commutation.enumerate_series({}), scipy_commutation),
+            ("current_limiter", current_limiter.design, lambda: current_limiter.enumerate_series({}), scipy_limiter),
+            ("class_d", class_d.design, lambda: class_d.enumerate_series({}), scipy_class_d)):
         t_casadi = timed(fn)
         t_enum = timed(enum)
         t_scipy = timed(sp)
@@ -84,9 +86,9 @@ def main():
     out = {"machine": f"{platform.machine()}, {platform.python_implementation()} {platform.python_version()}",
            "cli_wall_s_median_of_5": statistics.median(cli), "designs": rows,
            "relaxation_agrees": {
-               "commutation_nF": [float(scipy_commutation()[0]), design.design_commutation()["continuous_optimum"] * 1e9],
-               "limiter_r7": [float(np.exp(scipy_limiter()[0])), design.design_current_limiter()["r7_relaxed"]],
-               "class_d_kHz": [float(scipy_class_d()[0]), design.design_class_d()["f_continuous"] / 1e3]}}
+               "commutation_nF": [float(scipy_commutation()[0]), commutation.design().continuous_optimum * 1e9],
+               "limiter_r7": [float(np.exp(scipy_limiter()[0])), current_limiter.design().r7_relaxed],
+               "class_d_kHz": [float(scipy_class_d()[0]), class_d.design().f_continuous / 1e3]}}
     path = ROOT / "book" / "design" / "benchmark.json"
     path.write_text(json.dumps(out, indent=1) + "\n")
     print(json.dumps(out, indent=1))

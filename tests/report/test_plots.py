@@ -12,7 +12,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.ticker import EngFormatter  # noqa: E402
 
-from handbook import book, design, plots  # noqa: E402
+from handbook import report  # noqa: E402
+from handbook.design import current_limiter  # noqa: E402
+from handbook.report import design_plots  # noqa: E402
 
 
 class _SlowClock:
@@ -35,14 +37,14 @@ def test_design_space_plot_is_silent_on_a_busy_machine(monkeypatch):
     """The intermittent nbval failure: loc="best" searched the whole R7-R9 mesh and, under load, took
     over 1 s, so matplotlib warned on stderr. The plot now puts its legend in a fixed corner."""
     monkeypatch.setattr(matplotlib.legend, "time", _SlowClock())
-    fig = plots.limiter_design_space(design.design_current_limiter({}), {"the note's method": (0.075, 267.0)})
+    fig = design_plots.limiter_design_space(current_limiter.design({}), {"the note's method": (0.075, 267.0)})
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         _render(fig)
 
 
 def test_the_clock_does_make_a_best_legend_warn(monkeypatch):
-    """The check above can fail: with loc="best" the same clock raises the warning, unless book.setup's
+    """The check above can fail: with loc="best" the same clock raises the warning, unless report.setup's
     filter (the guard for every other plot) is in place."""
     monkeypatch.setattr(matplotlib.legend, "time", _SlowClock())
     with warnings.catch_warnings():
@@ -54,7 +56,7 @@ def test_the_clock_does_make_a_best_legend_warn(monkeypatch):
             _render(fig)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        book.setup()
+        report.setup()
         fig, ax = plt.subplots()
         ax.plot([1, 2, 3], label="a")
         ax.legend()
@@ -62,7 +64,7 @@ def test_the_clock_does_make_a_best_legend_warn(monkeypatch):
 
 
 def test_log_axes_keep_si_prefixes():
-    fig, ax = book.axes("R9", "R7", "Ω", "Ω", xlog=True, ylog=True)
+    fig, ax = report.axes("R9", "R7", "Ω", "Ω", xlog=True, ylog=True)
     ax.plot([100, 10e3], [0.05, 2.0])
     fig.canvas.draw()
     assert ax.get_xscale() == ax.get_yscale() == "log"
@@ -77,7 +79,7 @@ def test_log_axes_keep_si_prefixes():
 
 
 def test_unitless_log_axes_show_plain_numbers():
-    fig, ax = book.axes("speed (rpm)", "swing", "", "V", xlog=True, ylog=True)
+    fig, ax = report.axes("speed (rpm)", "swing", "", "V", xlog=True, ylog=True)
     ax.plot([100, 50000], [0.05, 3.0])
     fig.canvas.draw()
     labels = [t.get_text() for t in ax.get_xticklabels() if t.get_text()]
