@@ -62,7 +62,8 @@ def site(tmp_path_factory):
 
 
 def _console_errors(console):
-    return [l.split("CONSOLE", 1)[1][:200] for l in console if re.search(r"Uncaught|Error|Failed|error", l.split("CONSOLE", 1)[1])]
+    messages = [line.split("CONSOLE", 1)[1] for line in console]
+    return [m[:200] for m in messages if re.search(r"Uncaught|Error|Failed|error", m)]
 
 
 def _complete(dom, console):
@@ -86,7 +87,7 @@ def rendered(site):
 
 
 def test_every_page_loads(rendered):
-    for doc, (page, dom, _) in rendered.items():
+    for doc, (_page, dom, _) in rendered.items():
         soup = BeautifulSoup(dom, "html.parser")
         assert soup.find("h1"), f"{doc}: no title rendered"
         assert soup.find("main") or soup.find("article"), f"{doc}: no content"

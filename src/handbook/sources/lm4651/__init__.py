@@ -1,0 +1,76 @@
+"""LM4651 driver + LM4652 power MOSFET bridge (National Semiconductor, 2000): 170 W class-D amplifier.
+
+Loss, clipping, distortion and thermal models used to choose the switching frequency (``circuit``), the
+datasheet's equations 1 to 12 (``equations``) and its "Example Design", number by number (``claims``).
+"""
+from __future__ import annotations
+
+from ...core import Source
+from . import claims, data
+from .circuit import (
+    A_OM,
+    DEVICE,
+    EPS0_PF_PER_IN,
+    F_REF,
+    R_S,
+    SUPPLY_REF,
+    THD_EXPONENT,
+    THD_REF,
+    V_EFF,
+    dead_time,
+    f_sw_for,
+    gain,
+    i_sckt,
+    losses,
+    p_clip,
+    p_conduction,
+    p_switch,
+    r_osc_for,
+    switching_loss_fraction,
+    t_junction,
+    thd_n,
+    theta_sa_required,
+)
+from .data import FACTS
+
+
+def _equations():
+    from . import equations
+
+    return equations.build()
+
+
+SOURCE = Source(name=data.NAME, title="LM4651/LM4652 170 W class-D amplifier", parameters=data.PARAMETERS,
+                facts=FACTS, build_equations=_equations, equation_modules=(f"{__name__}.equations",),
+                build_claims=claims.build, errata=data.ERRATA)
+params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
+
+__all__ = [
+    "A_OM",
+    "DEVICE",
+    "EPS0_PF_PER_IN",
+    "FACTS",
+    "F_REF",
+    "R_S",
+    "SOURCE",
+    "SUPPLY_REF",
+    "THD_EXPONENT",
+    "THD_REF",
+    "V_EFF",
+    "dead_time",
+    "equation",
+    "evaluate",
+    "f_sw_for",
+    "gain",
+    "i_sckt",
+    "losses",
+    "p_clip",
+    "p_conduction",
+    "p_switch",
+    "params",
+    "r_osc_for",
+    "switching_loss_fraction",
+    "t_junction",
+    "thd_n",
+    "theta_sa_required",
+]

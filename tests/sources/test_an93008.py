@@ -1,0 +1,120 @@
+"""AN93008: equations, numbers against hand calculations, statuses, the supply-referenced worst case, errata."""
+import re
+
+import pytest
+
+from handbook import report
+from handbook.core import InputError
+from handbook.sources import SOURCES, an93008
+
+A = 33 / 40.5  # R9 / (R8 + R9), by hand
+
+HAND_93 = {
+    "an93008-vbe-tc": -0.0025, "an93008-offset-generic": 0.1, "an93008-vsupply-min": 10.8,
+    "an93008-level-shift": 10.8 * 7.5 / 40.5, "an93008-vplus": 10.8 * A, "an93008-factor-a": A,
+    "an93008-vcs-at-opamp": 0.1 * A, "an93008-window-high": 0.1 * A + 0.009, "an93008-window-low": 0.1 * A - 0.009,
+    "an93008-offset-tol": 0.009 / (0.1 * A), "an93008-supply-tol": 0.1, "an93008-b": A * 10.7 / 10.8,
+    "an93008-r10": 33e3 * (1 - A * 10.7 / 10.8) / (A * 10.7 / 10.8), "an93008-total-supply": 1.11 * 1.1 * 1.05 - 1,
+    "an93008-vz-min": 7.79, "an93008-factor-a-zener": 1 - 2 / 7.79, "an93008-offset-tol-zener": 9 / 74,
+    "an93008-zener-drift": 0.155, "an93008-zener-drift-pct": 0.155 / 7.7, "an93008-zener-total": 0.07,
+    "an93008-total-zener": 1.12 * 1.07 * 1.05 - 1, "an93008-zener-total-a": 0.03,
+    "an93008-total-zener-a": 1.12 * 1.03 * 1.05 - 1,
+}
+MISPRINTS = {"an93008-resistor-tol", "an93008-vz-min"}
+
+
+@pytest.mark.parametrize("ex_id,value", sorted(HAND_93.items()))
+def test_recomputed_against_hand(ex_id, value):
+    rows = {r["id"]: r for r in an93008.evaluate()}
+    assert rows[ex_id]["computed"] == pytest.approx(value, rel=1e-9)
+
+
+def test_statuses():
+    rows = an93008.evaluate()
+    assert {r["id"] for r in rows} == set(HAND_93) | {"an93008-resistor-tol"}
+    assert {r["id"] for r in rows if r["status"] == "misprint"} == MISPRINTS
+    assert all(r["status"] in ("exact", "rounding") for r in rows if r["id"] not in MISPRINTS)
+    # R10 = 7.87 k follows from the rounded A = 0.815, not from the exact 0.81481
+    assert {r["id"]: r["status"] for r in rows}["an93008-r10"] == "rounding"
+
+
+def test_supply_referenced_worst_case_by_hand():
+    wc = an93008.supply_worst_case(an93008.SOURCE.defaults)
+    # high corner: supply +10 %, R8 -, R9 +, R10 +, R11 -, offset -9 mV
+    v, r8, r9, r10, r11 = 13.2, 7.5e3 * .95, 33e3 * 1.05, 7.87e3 * 1.05, 33e3 * .95
+    a, b = r9 / (r8 + r9), r11 / (r10 + r11)
+    assert wc.high == pytest.approx(v * (1 - b / a) + 9e-3 / a, rel=1e-12)
+    assert wc.low < 0  # some boards never limit
+
+
+def test_params_refuse_unknown_names_and_out_of_range_values():
+    assert an93008.params(r8=8.2e3)["r8"] == 8.2e3
+    with pytest.raises(InputError, match="did you mean 'r8'"):
+        an93008.params(r88=8.2e3)
+    with pytest.raises(InputError, match="out of range"):
+        an93008.params(supply_tolerance=2.0)
+
+
+def test_equations_check():
+    eqs = {e.id: e.check() for e in an93008.SOURCE.equations()}
+    assert all(c.dims_ok for c in eqs.values())
+    assert {k for k, c in eqs.items() if not c.agrees} == {"an93008-eq2"}
+
+
+def _errata_of(src) -> list[dict]:
+    """One source's errata as the errata chapter lists them: misprinted or inconsistent numbers, equations that
+    differ from their derivation (not by a rounded constant) or were reconstructed, and the textual errata."""
+    rows = []
+    for r in src.evaluate():
+        if r["status"] in ("misprint", "inconsistent"):
+            rows.append({"id": r["id"], "note": src.name, "source": r["source"], "kind": r["status"],
+                         "what": r["quantity"], "printed": r["printed_text"], "recomputed": r["computed"],
+                         "unit": r["unit"], "evidence": r["reason"], "consequence": r["consequence"]})
+    for s in src.equation_summaries():
+        base = {"id": s["id"], "note": src.name, "source": s["source"], "what": s["title"],
+                "printed": s["printed_latex"], "recomputed": None, "unit": ""}
+        if (not s["agrees"] and s["relation"] == "differs" and not s["rounded_constants"]) or not s["dimensions_ok"]:
+            rows.append({**base, "kind": "equation", "evidence": s["note"], "consequence": "see the chapter"})
+        elif s["reconstructed"]:
+            rows.append({**base, "kind": "reconstructed", "evidence": s["reconstructed"],
+                         "consequence": "none once reconstructed"})
+    for t in src.errata:
+        rows.append({"id": t.id, "note": src.name, "source": t.source, "kind": "text", "what": t.what,
+                     "printed": "", "recomputed": None, "unit": "", "evidence": t.evidence,
+                     "consequence": t.consequence})
+    return rows
+
+
+def _errata(note=None) -> list[dict]:
+    """Every source's errata in book order, or one source's (an unknown name is refused with the known ones)."""
+    known = [s.name for s in SOURCES]
+    if note is not None and note not in known:
+        raise ValueError(f"errata: no source document {note!r}; known: {', '.join(known)}")
+    return [r for src in SOURCES if note is None or src.name == note for r in _errata_of(src)]
+
+
+def test_errata_cover_every_misprint_and_inconsistency_with_a_consequence():
+    rows = _errata()
+    ids = {r["id"] for r in rows}
+    bad = {r["id"] for src in SOURCES for r in src.evaluate() if r["status"] in ("misprint", "inconsistent")}
+    assert bad <= ids and MISPRINTS <= ids
+    assert all(r["consequence"] for r in rows)
+    assert {"an94002-eq2", "tda5341-capcdm"} <= ids  # reconstructed equations are listed
+    assert "an94002-eq11-num" not in ids  # differs by rounded constants only
+
+
+def test_errata_by_source_document_and_as_book_entries():
+    rows = _errata()
+    by_note = {n: _errata(n) for n in ("AN94002", "AN93008", "TDA5341", "LM4651/LM4652", "TCA5600")}
+    assert sum(len(v) for v in by_note.values()) == len(rows)
+    assert all(r["note"] == n for n, v in by_note.items() for r in v)
+    with pytest.raises(ValueError, match="AN94002"):
+        _errata("AN9400")
+    counts = report.errata_counts(rows).data.splitlines()
+    assert counts[-1].split("|")[-2].strip() == str(len(rows))
+    text = report.errata_md(by_note["AN94002"]).data
+    # the note's 22 uA against the TDA5144's 11 uA charge current, in the note's own unit
+    assert "printed 22 uA, recomputed 11 uA" in text
+    assert text.count("\n- ") + 1 == len(by_note["AN94002"])
+    assert "Evidence: " in text and "For a designer: " in text
+    assert not re.search(r"\.\.(\\|$)", text, re.MULTILINE)  # one full stop at each sentence's end
