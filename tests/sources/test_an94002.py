@@ -1,15 +1,17 @@
 """AN94002: every equation's check, and every example against numbers worked out independently here."""
+import dataclasses
 import itertools
 import math
 
 import numpy as np
 import pytest
 
-from handbook import an94002 as note
-from handbook.validate import InputError
+from handbook.core import UNIT_SCALES, InputError, Printed
+from handbook.sources import an94002 as note
 
-EQS = {e.id: e for e in note.equations()}
-EXAMPLES = {r["id"]: r for r in note.examples()}
+EQS = {e.id: e for e in note.SOURCE.equations()}
+EXAMPLES = {r["id"]: r for r in note.evaluate()}
+DEFAULTS = note.SOURCE.defaults
 
 
 # ---------------------------------------------------------------------------------------------
@@ -142,27 +144,34 @@ def test_example_statuses(status):
 
 
 def test_a_deliberately_wrong_printed_value_is_flagged():
-    from handbook.registry import Printed
-
-    for ex in note.examples_list():
+    for ex in note.SOURCE.claims():
         if ex.relation != "=":
             continue
-        good = ex.evaluate(note.DEFAULTS, note.DEFAULTS)["computed"]
-        wrong = Printed(repr(good * 1.5 / __import__("handbook.registry").registry.UNIT_SCALES[ex.printed.unit][0]),
-                        ex.printed.unit)
-        ex.printed, saved = wrong, ex.printed
-        try:
-            r = ex.evaluate(note.DEFAULTS, note.DEFAULTS)
-        finally:
-            ex.printed = saved
+        good = ex.evaluate(DEFAULTS, DEFAULTS)["computed"]
+        wrong = Printed(repr(good * 1.5 / UNIT_SCALES[ex.printed.unit][0]), ex.printed.unit)
+        r = dataclasses.replace(ex, printed=wrong).evaluate(DEFAULTS, DEFAULTS)
         assert r["status"] == ("misprint" if ex.basis == "note" else "inconsistent"), ex.id
 
 
 def test_changed_inputs_make_the_comparison_not_applicable():
-    rows = {r["id"]: r for r in note.examples(note.params(rpm_min=900.0))}
+    rows = {r["id"]: r for r in note.evaluate(note.params(rpm_min=900.0))}
     assert rows["an94002-capcd-bound"]["status"] == "n/a"
     assert rows["an94002-capcd-bound"]["computed"] == pytest.approx(22e-6 * 10 / (900 * 6 * 1.4), rel=1e-12)
     assert rows["an94002-fosc"]["status"] == "rounding"  # does not depend on rpm_min
+
+
+def test_claims_record_the_parameters_they_read():
+    rows = {r["id"]: r for r in note.evaluate(note.params(cap_series="E6"))}
+    # C3 is picked from the series: no printed value to compare with another series
+    assert rows["an94002-c3"]["status"] == "n/a" and "cap_series" in rows["an94002-c3"]["reason"]
+    assert rows["an94002-c3"]["computed"] == pytest.approx(22e-9)  # E6: 15 nF x 0.95 < 14.55 nF <= 22 nF
+    # the window does not read the series: still compared with the print
+    assert rows["an94002-window"]["status"] == "exact"
+    assert rows["an94002-window"]["depends"] == ["v_cd_high_min", "v_cd_low_max"]
+    assert rows["an94002-c3"]["depends"] == ["cap_series", "cap_tolerance", "i_charge_max", "pole_pairs", "rpm_min",
+                                             "v_cd_high_min", "v_cd_low_max"]
+    # a claim resting on a datasheet figure reads no parameter at all
+    assert rows["an94002-ich-max"]["depends"] == [] and rows["an94002-ich-max"]["status"] == "inconsistent"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -213,7 +222,7 @@ def test_speed_range_of_the_board_capacitor():
 
 
 def test_cap_ti_waveform_times():
-    t, v = note.cap_ti_waveform(10e-9, note.DEFAULTS)
+    t, v = note.cap_ti_waveform(10e-9, DEFAULTS)
     assert t[1] == pytest.approx(10e-9 * 0.1 / 57e-6)
     assert t[2] - t[1] == pytest.approx(3.8e-3)
     assert t[3] - t[2] == pytest.approx(10e-9 * 2.0 / 28e-6)
@@ -224,6 +233,28 @@ def test_12nc_codes_that_disagree_with_the_printed_values():
     bad = {ref for ref, _, value, _, _, _, nc in note.PARTS
            if value and note.decode_12nc(nc) is not None and abs(note.decode_12nc(nc) - value) > 1e-6 * value}
     assert bad == {"R1", "R14", "C6"}
+
+
+def test_parts_rows_compare_print_code_and_calculation():
+    rows = {r[0]: r for r in note.parts_rows(note.params())}
+    assert list(rows) == [ref for ref, *_ in note.PARTS]
+    assert all(len(r) == len(note.PARTS_HEADER) for r in rows.values())
+    differs = {ref for ref, r in rows.items() if "**differs**" in r[6]}
+    assert differs == {"R1", "R14", "C6"}
+    # decoded by hand: ...53229 = 22 x 0.1 ohm, ...53701 = 70 x 10 ohm, ...17224 = 22 x 10^4 pF
+    assert rows["R1"][6].startswith("2.2 Ω") and rows["R14"][6].startswith("700 Ω")
+    assert rows["C6"][6].startswith("220 nF") and rows["C5"][6] == "220 nF"
+    assert rows["C1"][6] == "" and rows["R7"][6] == ""  # electrolytic code, TBD value
+    assert rows["R1"][2] == "22 Ω" and rows["C1"][2] == "10 µF" and rows["R10"][3] == "1%"
+    # R7: 0.8 V / 1 A and 0.1 V / 1 A; R9: 0.1 V x 21.6 k / 8.1 V = 266.7 ohm, nearest E96 267 ohm
+    assert rows["R7"][8] == "800 mΩ (O1, 0.8 V) or 100 mΩ (O2, 100 mV)"
+    assert rows["R9"][8] == "267 Ω (E96, eq 14)"
+    assert rows["R3"][8] == "39 kΩ: exact" and rows["C3"][8] == "18 nF: exact" and rows["C6"][8] == "2 nF: exact"
+    assert rows["R2"][7] == rows["R2"][8] == ""
+    # another limit current: R7 follows, the claims it shows are then not comparable
+    other = {r[0]: r for r in note.parts_rows(note.params(i_limit=2.0, v_cs=0.2))}
+    assert other["R7"][8] == "400 mΩ (O1, 0.8 V) or 100 mΩ (O2, 200 mV)"
+    assert other["R9"][8].endswith("(E96, eq 14)") and other["R9"][8] != rows["R9"][8]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -243,3 +274,21 @@ def test_12nc_codes_that_disagree_with_the_printed_values():
 def test_bad_input_names_the_field(call, field):
     with pytest.raises(InputError, match=field):
         call()
+
+
+def test_params_refuse_unknown_names_with_the_near_match():
+    with pytest.raises(InputError, match="rpm_min") as exc:
+        note.params(rpm_mni=1)
+    assert "rpm_mni" in str(exc.value)
+
+
+@pytest.mark.parametrize("key,value", [("rpm_min", -5.0), ("cap_tolerance", 1.5), ("pole_pairs", 2.5),
+                                       ("i_charge_max", float("nan")), ("cap_series", "E7"), ("v_zener", "8.2")])
+def test_params_refuse_values_out_of_range_naming_the_key(key, value):
+    with pytest.raises(InputError, match=key):
+        note.params(**{key: value})
+
+
+def test_every_parameter_default_is_in_its_own_range():
+    for par in note.SOURCE.parameters:
+        assert par.check(par.default) == par.default, par.name

@@ -1,8 +1,8 @@
 """TCA5600 flyback coil: eq 1 to 6a derived, the worked example and the application check by hand."""
 import pytest
 
-from handbook.sources import tca5600
 from handbook.core import InputError
+from handbook.sources import tca5600
 
 
 def test_every_equation_agrees_with_its_derivation():

@@ -128,7 +128,8 @@ def cap_ti_waveform(cap, p: dict, stalled: bool = True):
 
 def v_mot_max(v_supply, supply_tolerance, v_drop_min):
     """Highest controllable V_mot: the lowest supply less the drop R7 and T1 need."""
-    return validate.positive("v_supply", v_supply, "V") * (1 - validate.fraction("supply_tolerance", supply_tolerance)) - v_drop_min
+    low = 1 - validate.fraction("supply_tolerance", supply_tolerance)
+    return validate.positive("v_supply", v_supply, "V") * low - v_drop_min
 
 
 def v_in_for(v_mot, r3, r4):

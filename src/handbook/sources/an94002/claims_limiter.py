@@ -1,0 +1,96 @@
+"""AN94002 section 2.4, the op-amp limiter: every number it prints, recomputed."""
+from __future__ import annotations
+
+from ...core import Claim, Printed
+from .circuit import factor_a, level_shift, trip_worst_case
+from .data import FACTS, NAME
+
+WHERE = f"{NAME} 2.4"
+
+
+def a(p):
+    """The level-shift factor A = R13 / (R12 + R13)."""
+    return factor_a(p["r12"], p["r13"])
+
+
+def vd1_min(p):
+    """The lowest zener voltage."""
+    return p["v_zener"] * (1 - p["zener_tolerance"])
+
+
+def seen(p):
+    """The sense signal at the op-amp input, A V_cs."""
+    return a(p) * p["v_cs"]
+
+
+def zener_drift(p):
+    return p["zener_tc"] * p["temp_span"]
+
+
+def largest_excursion(p, include=("resistors", "zener", "offset")):
+    """The exact worst case of the trip voltage over the tolerances in ``include``, as a fraction."""
+    wc = trip_worst_case(p, include=include)
+    return max(abs(wc.rel_low), abs(wc.rel_high))
+
+
+def build() -> list[Claim]:
+    ch = "opamp"
+    return [
+        Claim(id="an94002-offset-generic", where=WHERE, quantity="tolerance from a 10 mV offset at V_cs = 100 mV",
+              printed=Printed("10", "%"), chapter=ch, compute=lambda p: p["offset_generic"] / p["v_cs"],
+              reason="10 mV / 100 mV, before any level shift"),
+        Claim(id="an94002-vd1-min", where=WHERE, quantity="lowest zener voltage 8.2 V - 5 %",
+              printed=Printed("7.79", "V"), chapter=ch, compute=vd1_min, reason="0.95 x 8.2 V"),
+        Claim(id="an94002-factor-a", where=WHERE, quantity="level-shift factor A = R13/(R12+R13)",
+              printed=Printed("0.741", "1"), chapter=ch, compute=a, reason="16 k / 21.6 k = 0.74074"),
+        Claim(id="an94002-a-vd1", where=WHERE, quantity="A x V_D1 in eq 11", printed=Printed("5.77", "V"), chapter=ch,
+              compute=lambda p: a(p) * vd1_min(p), reason="0.74074 x 7.79 V = 5.770 V"),
+        Claim(id="an94002-level-shift", where=WHERE, quantity="level shift at V_D1 = 7.79 V, V_cs = 0",
+              printed=Printed("2.02", "V"), chapter=ch, compute=lambda p: level_shift(vd1_min(p), p["r12"], p["r13"]),
+              reason="7.79 V x 5.6 k / 21.6 k = 2.0196 V"),
+        Claim(id="an94002-vcs-at-opamp", where=WHERE, quantity="sense signal at the op-amp input for V_cs = 100 mV",
+              printed=Printed("74.1", "mV"), chapter=ch, compute=seen, reason="0.74074 x 100 mV = 74.07 mV"),
+        Claim(id="an94002-window-high", where=WHERE, quantity="op-amp input at trip, offset -9 mV side (upper)",
+              printed=Printed("90.5", "mV"), chapter=ch, compute=lambda p: seen(p) + p["offset"],
+              reason="74.07 + 9 = 83.07 mV; 90.5 mV is AN93008's 81.5 + 9 (A = 0.815) copied unchanged",
+              consequence="none for the tolerance (the +-12 % is right), but a reader checking the window against "
+                          "74.1 mV is misled"),
+        Claim(id="an94002-window-low", where=WHERE, quantity="op-amp input at trip, offset +9 mV side (lower)",
+              printed=Printed("72.5", "mV"), chapter=ch, compute=lambda p: seen(p) - p["offset"],
+              reason="74.07 - 9 = 65.07 mV; 72.5 mV is AN93008's 81.5 - 9 (A = 0.815) copied unchanged",
+              consequence="as for the upper end: the printed window belongs to AN93008's supply-referenced circuit"),
+        Claim(id="an94002-offset-tol", where=WHERE, quantity="offset-related tolerance of the limit",
+              printed=Printed("12", "%"), chapter=ch, compute=lambda p: p["offset"] / seen(p),
+              reason="9 mV / 74.07 mV = 12.15 % (consistent with A = 0.741, not with the printed 90.5/72.5 mV "
+                     "window)"),
+        Claim(id="an94002-zener-tol", where=f"{NAME} 2.4, eq (13)", quantity="zener-related tolerance of the limit",
+              printed=Printed("5", "%"), chapter=ch, compute=lambda p: p["zener_tolerance"],
+              reason="V_cs is proportional to V_D1 (eq 13)"),
+        Claim(id="an94002-zener-drift", where=WHERE, quantity="zener drift over 25 C +- 25 C",
+              printed=Printed("150", "mV"), chapter=ch, compute=zener_drift,
+              reason="6.2 mV/K x 25 K = 155 mV, printed to two figures"),
+        Claim(id="an94002-zener-drift-pct", where=WHERE, quantity="zener drift as a tolerance",
+              printed=Printed("2", "%"), chapter=ch, compute=lambda p: zener_drift(p) / vd1_min(p),
+              reason="155 mV / 7.79 V = 1.99 %"),
+        Claim(id="an94002-zener-tc", where=f"{NAME} 2.4 vs BZX79 datasheet",
+              quantity="largest zener temperature coefficient", printed=Printed("6.2", "mV/K"), chapter=ch,
+              compute=lambda p: FACTS["bzx79_tc"].value[1] * p["v_zener"],
+              reason="BZX79 datasheet: up to +0.08 %/K, 6.56 mV/K at 8.2 V; the drift becomes +-164 mV, +-2.1 %",
+              basis="BZX79 datasheet", consequence="the drift term grows from +-2.0 % to +-2.1 %: negligible"),
+        Claim(id="an94002-resistor-tol", where=WHERE, quantity="resistor-related tolerance of the limit (1 % R9..R13)",
+              printed=Printed("5", "%"), chapter=ch, compute=lambda p: largest_excursion(p, ("resistors",)),
+              reason="eq 14's matching (R10 = R12, R11 = R13) carried into the tolerance; with each 1 % resistor "
+                     "varying on its own V_cs = V_D1 (1 - B/A) moves -86 %/+85 % (a 100 mV difference of two 8 V "
+                     "dividers)",
+              consequence="the limiter can trip anywhere from almost no current to twice the design value on a real "
+                          "board; design it with the exact worst case (chapter 'Choosing R7 and R9')"),
+        Claim(id="an94002-total-tol", where=WHERE, quantity="total initial tolerance, note's method 1.12 x 1.05 x 1.05",
+              printed=Printed("23", "%"), chapter=ch, compute=lambda p: 1.12 * 1.05 * 1.05 - 1,
+              reason="1.12 x 1.05 x 1.05 = 1.2348; the method's lower end is 0.88 x 0.95 x 0.95 = 0.794 (-20.6 %)"),
+        Claim(id="an94002-total-exact", where=WHERE, quantity="total initial tolerance, exact worst case of eq 13",
+              printed=Printed("23", "%"), chapter=ch, compute=largest_excursion,
+              reason="every corner of 1 % R9..R13, 5 % zener and +-9 mV offset: the trip voltage spans 1.2 to 206 mV "
+                     "(-99 %/+106 %), not +-23 %",
+              consequence="a board built as the note says is not guaranteed to limit at all, or may limit far too "
+                          "early; see the design chapter for a limiter that is"),
+    ]
