@@ -30,7 +30,7 @@ def key(source) -> str:
     from importlib.metadata import version
 
     h = hashlib.sha256(f"sympy {version('sympy')}\n{source.name}\n".encode())
-    for name in (*source.equation_modules, *_CHECK_CODE):
+    for name in (source.equations_module, *_CHECK_CODE):
         h.update(name.encode() + b"\0" + _module_bytes(name) + b"\0")
     return h.hexdigest()[:20]
 

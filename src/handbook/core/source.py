@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import difflib
 import functools
+import importlib
 import math
 import numbers
 from collections.abc import Callable, Mapping
@@ -98,8 +99,8 @@ class Source:
     title: str
     parameters: tuple[Param, ...]
     facts: Mapping[str, Fact] = field(default_factory=dict)
-    build_equations: Callable[[], list] = lambda: []  # builds the Equation records (imports sympy)
-    equation_modules: tuple[str, ...] = ()  # module files whose code defines the equations (cache key)
+    equations_module: str = ""  # the module whose build() makes the Equation records (imported on first use:
+    # it imports sympy); its code is also the key of the on-disk check cache
     build_claims: Callable[[], list[Claim]] = lambda: []
     errata: tuple[TextErratum, ...] = ()
 
@@ -160,4 +161,6 @@ def _claims(source: Source) -> tuple:
 
 @functools.cache
 def _equations(source: Source) -> tuple:
-    return tuple(source.build_equations())
+    if not source.equations_module:
+        return ()
+    return tuple(importlib.import_module(source.equations_module).build())

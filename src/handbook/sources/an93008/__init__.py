@@ -9,15 +9,8 @@ from ...core import Source
 from . import claims, data
 from .circuit import b_for, factor_a, factor_b, r10_for, supply_worst_case, v_cs_trip
 
-
-def _equations():
-    from . import equations
-
-    return equations.build()
-
-
 SOURCE = Source(name=data.NAME, title="AN93008 current limiters", parameters=data.PARAMETERS,
-                build_equations=_equations, equation_modules=(f"{__name__}.equations",),
+                equations_module=f"{__name__}.equations",
                 build_claims=claims.build, errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 

@@ -47,15 +47,8 @@ from .circuit import (
 from .data import FACTS, NAME
 from .parts import PART_ROLES, PARTS, PARTS_HEADER, decode_12nc, parts_rows
 
-
-def _equations():
-    from . import equations
-
-    return equations.build()
-
-
 SOURCE = Source(name=NAME, title="TDA5143/TDA5144 evaluation board", parameters=data.PARAMETERS,
-                facts=FACTS, build_equations=_equations, equation_modules=(f"{__name__}.equations",),
+                facts=FACTS, equations_module=f"{__name__}.equations",
                 build_claims=claims.build, errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 

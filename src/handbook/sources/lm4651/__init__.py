@@ -33,15 +33,8 @@ from .circuit import (
 )
 from .data import FACTS
 
-
-def _equations():
-    from . import equations
-
-    return equations.build()
-
-
 SOURCE = Source(name=data.NAME, title="LM4651/LM4652 170 W class-D amplifier", parameters=data.PARAMETERS,
-                facts=FACTS, build_equations=_equations, equation_modules=(f"{__name__}.equations",),
+                facts=FACTS, equations_module=f"{__name__}.equations",
                 build_claims=claims.build, errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 

@@ -10,15 +10,8 @@ from . import data
 from .circuit import coil_voltages, design, operating_point
 from .data import APPLICATION
 
-
-def _equations():
-    from . import equations
-
-    return equations.build()
-
-
 SOURCE = Source(name=data.NAME, title="TCA5600/TCF5600 DC/DC converter (excerpt)", parameters=data.PARAMETERS,
-                build_equations=_equations, equation_modules=(f"{__name__}.equations",), errata=data.ERRATA)
+                equations_module=f"{__name__}.equations", errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 
 __all__ = ["APPLICATION", "SOURCE", "coil_voltages", "design", "equation", "evaluate", "operating_point", "params"]

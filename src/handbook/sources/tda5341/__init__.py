@@ -9,15 +9,8 @@ from ...core import Source
 from . import claims, data
 from .circuit import cap_cd_for, constant_nf_hz, max_delay_per_nf
 
-
-def _equations():
-    from . import equations
-
-    return equations.build()
-
-
 SOURCE = Source(name=data.NAME, title="TDA5341 start and commutation (excerpt)", parameters=data.PARAMETERS,
-                build_equations=_equations, equation_modules=(f"{__name__}.equations",),
+                equations_module=f"{__name__}.equations",
                 build_claims=claims.build, errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 
