@@ -15,12 +15,12 @@ $(STAMP): requirements.txt constraints.txt pyproject.toml
 	$(BIN)/uv pip install --quiet --python $(BIN)/python -r requirements.txt
 	touch $(STAMP)
 
-# jupyter-cache keys each chapter on its code cells only; the key of the package's code (and of the pins)
-# is kept beside it, and a change to either clears the cache, so every chapter re-runs after a change
+# jupyter-cache keys each chapter on its code cells only, Sphinx on the notebook file; the key of the package's code (and pins)
+# is kept beside them, and a change clears both (cache and doctrees), so every chapter re-runs after a change
 # under src/handbook and none re-runs when nothing changed.
 book: $(STAMP)
 	@key=$$(cat $$(find src/handbook -name '*.py' | sort) requirements.txt constraints.txt | sha256sum | cut -c1-16); \
-	if [ "$$(cat _build/.src-key 2>/dev/null)" != "$$key" ]; then rm -rf _build/.jupyter_cache; fi; \
+	if [ "$$(cat _build/.src-key 2>/dev/null)" != "$$key" ]; then rm -rf _build/.jupyter_cache _build/.doctrees; fi; \
 	$(BIN)/jupyter-book build . -W -n --keep-going && echo "$$key" > _build/.src-key
 
 # Unit tests and notebooks run side by side (one core each), each pytest's output kept together.
