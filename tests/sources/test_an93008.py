@@ -3,7 +3,7 @@ import re
 
 import pytest
 
-from handbook import report
+from handbook import catalog, report
 from handbook.core import InputError
 from handbook.sources import SOURCES, an93008
 
@@ -61,40 +61,8 @@ def test_equations_check():
     assert {k for k, c in eqs.items() if not c.agrees} == {"an93008-eq2"}
 
 
-def _errata_of(src) -> list[dict]:
-    """One source's errata as the errata chapter lists them: misprinted or inconsistent numbers, equations that
-    differ from their derivation (not by a rounded constant) or were reconstructed, and the textual errata."""
-    rows = []
-    for r in src.evaluate():
-        if r["status"] in ("misprint", "inconsistent"):
-            rows.append({"id": r["id"], "note": src.name, "source": r["source"], "kind": r["status"],
-                         "what": r["quantity"], "printed": r["printed_text"], "recomputed": r["computed"],
-                         "unit": r["unit"], "evidence": r["reason"], "consequence": r["consequence"]})
-    for s in src.equation_summaries():
-        base = {"id": s["id"], "note": src.name, "source": s["source"], "what": s["title"],
-                "printed": s["printed_latex"], "recomputed": None, "unit": ""}
-        if (not s["agrees"] and s["relation"] == "differs" and not s["rounded_constants"]) or not s["dimensions_ok"]:
-            rows.append({**base, "kind": "equation", "evidence": s["note"], "consequence": "see the chapter"})
-        elif s["reconstructed"]:
-            rows.append({**base, "kind": "reconstructed", "evidence": s["reconstructed"],
-                         "consequence": "none once reconstructed"})
-    for t in src.errata:
-        rows.append({"id": t.id, "note": src.name, "source": t.source, "kind": "text", "what": t.what,
-                     "printed": "", "recomputed": None, "unit": "", "evidence": t.evidence,
-                     "consequence": t.consequence})
-    return rows
-
-
-def _errata(note=None) -> list[dict]:
-    """Every source's errata in book order, or one source's (an unknown name is refused with the known ones)."""
-    known = [s.name for s in SOURCES]
-    if note is not None and note not in known:
-        raise ValueError(f"errata: no source document {note!r}; known: {', '.join(known)}")
-    return [r for src in SOURCES if note is None or src.name == note for r in _errata_of(src)]
-
-
 def test_errata_cover_every_misprint_and_inconsistency_with_a_consequence():
-    rows = _errata()
+    rows = catalog.errata()
     ids = {r["id"] for r in rows}
     bad = {r["id"] for src in SOURCES for r in src.evaluate() if r["status"] in ("misprint", "inconsistent")}
     assert bad <= ids and MISPRINTS <= ids
@@ -104,12 +72,12 @@ def test_errata_cover_every_misprint_and_inconsistency_with_a_consequence():
 
 
 def test_errata_by_source_document_and_as_book_entries():
-    rows = _errata()
-    by_note = {n: _errata(n) for n in ("AN94002", "AN93008", "TDA5341", "LM4651/LM4652", "TCA5600")}
+    rows = catalog.errata()
+    by_note = {n: catalog.errata(n) for n in ("AN94002", "AN93008", "TDA5341", "LM4651/LM4652", "TCA5600")}
     assert sum(len(v) for v in by_note.values()) == len(rows)
     assert all(r["note"] == n for n, v in by_note.items() for r in v)
     with pytest.raises(ValueError, match="AN94002"):
-        _errata("AN9400")
+        catalog.errata("AN9400")
     counts = report.errata_counts(rows).data.splitlines()
     assert counts[-1].split("|")[-2].strip() == str(len(rows))
     text = report.errata_md(by_note["AN94002"]).data
