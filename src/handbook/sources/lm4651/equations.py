@@ -17,7 +17,7 @@ tr, tf, tom, Cs, Rp, epsr, Ar, d = sp.symbols(r"t_r t_f T_{OVERMOD} C_{START} R_
 dV, Vk, Cfl1, Cfl2, Rfl3, Cin = sp.symbols("dV V_k C_{fl1} C_{fl2} R_{fl3} C_{IN}", positive=True)
 w = sp.Symbol("omega", positive=True)
 #: the printed (number-only) symbols: C_START_n is C_START / F, and so on
-n = {s: sp.Symbol(s.name + "_n", positive=True) for s in (Cs, t, Rp, R, f, x)}
+n = {s: sp.Symbol("{" + s.name + "}_{n}", positive=True) for s in (Cs, t, Rp, R, f, x)}  # braced: no double subscript
 
 
 def _corner(r, c):
