@@ -1,13 +1,22 @@
-"""R7 and R9 of the op-amp current limiter (AN94002 figure 3): every board's trip current between two limits.
+"""The op-amp current limiter (AN94002 figure 3) designed as a whole network: R7, R9, R10, R11, R12, R13.
 
-Problem (x = ln R7, ln R9): minimise ln R7 (the least loss) subject to
-  I_trip,min = V_cs,min(R9) / (R7 (1 + t7)) >= i_no_trip
-  I_trip,max = V_cs,max(R9) / (R7 (1 - t7)) <= i_must_trip
-with V_cs,min/max the tolerance corners (:func:`vcs_extremes`). solve (IPOPT on the relaxation) -> snap
-(walk the R7 series up from the relaxed optimum, the best series R9 for each) -> verify -> Result.
+Problem. Every resistor takes a value of its series within its range (or the value it is pinned to). At
+every tolerance corner (:mod:`.limiter_network`: resistors, zener tolerance and drift, op-amp offset and
+bias current; exact) the trip current stays inside [i_no_trip (1 + m), i_must_trip (1 - m)] with m =
+``min_margin``, and both op-amp inputs stay ``input_headroom`` below the supply. Objective: the smallest R7
+(least loss and least drop at any motor current); among networks with that R7, the largest worst margin.
+
+Solution. R7 comes first: IPOPT minimises ln R7 over the continuous relaxation of all six resistors, a
+lower bound for every series design. Then, for each series R7 from that bound up, a branch and bound
+(:mod:`.branch_bound`, IPOPT on every node's relaxation) maximises the worst margin over the five divider
+resistors; the first R7 whose best network reaches ``min_margin`` is the answer. With four free divider
+resistors on E96 there are about 10^11 networks per R7, far too many to enumerate; on E6/E12 dividers the
+tests and ``tools/benchmark.py`` check that this search finds exactly what enumeration finds. The chosen
+network is re-verified at every corner by :func:`limiter_network.verify`.
 """
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -16,161 +25,237 @@ import numpy as np
 
 from ..core import series
 from ..sources.an94002 import circuit as an94002
+from . import branch_bound
+from . import limiter_network as net
 from .common import Result, completed, ordered
-from .solvers import Infeasible, minimise
+from .solvers import IPOPT_OPTIONS
 
 TABLE = "current_limiter"
+RESISTORS = ("r7",) + net.DIVIDER
+#: the motor ICs' own output current limits, minimum (datasheet_facts: TDA5144 / TDA5143T datasheets)
+IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
+#: a sense resistor dissipating more than this needs a power part (2512 metal-strip chips are rated 1 to 3 W)
+R7_POWER_NORMAL = 2.0
+zener_range = net.zener_range
+#: the tie-break is settled to within this worst margin (0.1 percentage point): the bound proves no
+#: network with the same R7 is better by more
+GAP = 1e-3
 
 
 @dataclass(frozen=True)
 class LimiterResult(Result):
     r7: float
     r9: float
+    r10: float
+    r11: float
+    r12: float
+    r13: float
     i_trip_min: float
     i_trip_max: float
     i_trip_nominal: float
     p_r7: float
-    binding: str
-    relaxed_binding: tuple
+    v_cs_nominal: float
     margin_low: float
     margin_high: float
+    headroom_min: float
+    binding: str
+    warnings: tuple
     r7_relaxed: float
-    r9_relaxed: float
-    v_cs_nominal: float
+    nodes: int
+    r7_tried: int
+    margin_bound: float  # no network with this R7 has a larger worst margin (proven by the search)
+    unproven: tuple  # smaller R7 values whose search stopped at its node limit without finding a network
 
     table = TABLE
+
+    @property
+    def network(self) -> tuple:
+        return self.r9, self.r10, self.r11, self.r12, self.r13
 
 
 def checked(spec: dict | None) -> dict:
     s = completed(TABLE, spec)
     ordered(TABLE, "i_no_trip", "i_must_trip", s, "A")
-    ordered(TABLE, "r7_min", "r7_max", s, "ohm")
-    ordered(TABLE, "r9_min", "r9_max", s, "ohm")
+    for name in RESISTORS:
+        ordered(TABLE, f"{name}_min", f"{name}_max", s, "ohm", strict=False)
+    if s["i_no_trip"] * (1 + s["min_margin"]) >= s["i_must_trip"] * (1 - s["min_margin"]):
+        from ..core import InputError
+        raise InputError(f"{TABLE}.min_margin = {s['min_margin']:g} leaves no room between i_no_trip = "
+                         f"{s['i_no_trip']:g} A and i_must_trip = {s['i_must_trip']:g} A: use a smaller margin")
     return s
 
 
-def zener_range(s: dict) -> tuple[float, float]:
-    drift = s["zener_tc"] * s["temp_span"]
-    return s["zener_voltage"] * (1 - s["zener_tolerance"]) - drift, s["zener_voltage"] * (1 + s["zener_tolerance"]) + drift
+def choices(s: dict, name: str) -> np.ndarray:
+    """The values a resistor may take: its pinned value, or its series within its range."""
+    if s[name] is not None:
+        return np.array([float(s[name])])
+    return np.array(series.values(s[f"{name}_series"], s[f"{name}_min"], s[f"{name}_max"]))
 
 
-def vcs_extremes(r9, s: dict):
-    """Lowest and highest trip voltage over every tolerance corner, in closed form.
-
-    V_cs = V_D1 - (1 + R12/R13) (V_D1 B + V_os), B = R11 / (R9 + R10 + R11). Whatever V_D1 is, V_cs
-    rises with R9, R10 and R13 and falls with R11, R12 and V_os (because V_D1 B + V_os > 0), so the
-    high corner of the resistors and offset is (R9+, R10+, R11-, R12-, R13+, V_os-) and the low corner
-    its mirror image. V_cs is linear in V_D1 with slope 1 - B/A, whose sign depends on the design, so
-    both zener ends are evaluated. The unit tests check this against all 128 corners. Works on numpy
-    arrays and casadi symbols.
-    """
-    t = s["resistor_tolerance"]
-    vz_lo, vz_hi = zener_range(s)
-    lo_, hi_ = 1 - t, 1 + t
-
-    def vcs(vz, r9_, r10, r11, r12, r13, vos):
-        return vz - (1 + r12 / r13) * (vz * r11 / (r9_ + r10 + r11) + vos)
-
-    high_r = (r9 * hi_, s["r10"] * hi_, s["r11"] * lo_, s["r12"] * lo_, s["r13"] * hi_, -s["offset"])
-    low_r = (r9 * lo_, s["r10"] * lo_, s["r11"] * hi_, s["r12"] * hi_, s["r13"] * lo_, s["offset"])
-    symbolic = isinstance(r9, (ca.SX, ca.MX))
-    fmax, fmin = (ca.fmax, ca.fmin) if symbolic else (np.maximum, np.minimum)
-    high = fmax(vcs(vz_hi, *high_r), vcs(vz_lo, *high_r))
-    low = fmin(vcs(vz_lo, *low_r), vcs(vz_hi, *low_r))
-    return low, high
+def scores(r7: float, r: np.ndarray, s: dict) -> np.ndarray:
+    """Exact worst margin of each network (rows of R9..R13) with this R7; -inf where a headroom fails."""
+    v = net.verify(r7, tuple(r.T), s)
+    worst = np.minimum(v["margin_low"], v["margin_high"])
+    ok = (v["headroom_min"] >= s["input_headroom"] - 1e-12) & (v["i_trip_min"] > 0)
+    return np.where(ok, worst, -np.inf)
 
 
-def trip_currents(r7, r9, s: dict):
-    """(lowest, highest) trip current with R7's tolerance too."""
-    low, high = vcs_extremes(r9, s)
-    return low / (r7 * (1 + s["r7_tolerance"])), high / (r7 * (1 - s["r7_tolerance"]))
+class Relaxation:
+    """The continuous problem in x = (ln R7, ln R9 .. ln R13, t), t the worst margin; one IPOPT instance,
+    called with the node's bounds. Weight w = 1: minimise ln R7 (t >= min_margin); w = 0: maximise t."""
+
+    def __init__(self, s: dict, options: dict | None = None):
+        x, w = ca.SX.sym("x", 7), ca.SX.sym("w")
+        r7, r, t = ca.exp(x[0]), tuple(ca.exp(x[i]) for i in range(1, 6)), x[6]
+        lows, highs = net.trip_voltage_corners(r, s, both_ends=False)
+        h = max(s["input_headroom"], 1.0)
+        g = ([lo / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1 - t for lo in lows]
+             + [1 - hi / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"]) - t for hi in highs]
+             + [(v - s["input_headroom"]) / h for v in net.headroom_corners(r, s)])
+        self.n_g = len(g)
+        nlp = {"x": x, "p": w, "f": w * x[0] - (1 - w) * x[6], "g": ca.vertcat(*g)}
+        base = {**IPOPT_OPTIONS, "ipopt.tol": 1e-9, "ipopt.mu_strategy": "adaptive", **(options or {})}
+        self.solver = ca.nlpsol("limiter", "ipopt", nlp, base)
+        # a child node starts from its parent's solution and multipliers: a handful of iterations, not 30
+        self.warm = ca.nlpsol("limiter_warm", "ipopt", nlp, {**base, "ipopt.warm_start_init_point": "yes",
+                                                             "ipopt.mu_init": 1e-5, "ipopt.warm_start_bound_push": 1e-9,
+                                                             "ipopt.warm_start_mult_bound_push": 1e-9})
+
+    def solve(self, lb, ub, x0, weight: float, t_min: float = -10.0, warm: dict | None = None):
+        """(x, status, state) of the box lb..ub (resistor values), or None when IPOPT proves it infeasible.
+        ``warm``: a parent's state (its x and multipliers)."""
+        solver = self.solver if warm is None else self.warm
+        args = dict(x0=x0, p=weight, lbx=[*np.log(lb), t_min], ubx=[*np.log(ub), 10.0], lbg=0, ubg=np.inf)
+        if warm is not None:
+            args.update(x0=np.clip(warm["x"], args["lbx"], args["ubx"]), lam_x0=warm["lam_x"], lam_g0=warm["lam_g"])
+        r = solver(**args)
+        status = solver.stats()["return_status"]
+        if status in ("Infeasible_Problem_Detected", "Restoration_Failed"):
+            return None
+        return np.array(r["x"]).ravel(), status, {"x": np.array(r["x"]).ravel(), "lam_x": r["lam_x"], "lam_g": r["lam_g"]}
 
 
-def limiter_margins(r7, r9, s: dict):
-    """Relative margins to the two limits (both >= 0 when the design meets the spec)."""
-    i_lo, i_hi = trip_currents(r7, r9, s)
-    return i_lo / s["i_no_trip"] - 1, 1 - i_hi / s["i_must_trip"]
-
-
-def _best_r9(r7: float, r9s: np.ndarray, s: dict):
-    m_lo, m_hi = limiter_margins(r7, r9s, s)
-    worst = np.minimum(m_lo, m_hi)
-    ok = worst >= -1e-12
-    if not ok.any():
+def _root(s: dict, relax: Relaxation, lists: list) -> float | None:
+    """The relaxation's smallest R7 with every margin >= min_margin (None: no continuous network does)."""
+    lb, ub = np.array([v[0] for v in lists]), np.array([v[-1] for v in lists])
+    res = relax.solve(lb, ub, [*np.log(np.sqrt(lb * ub)), 0.0], 1.0, s["min_margin"])
+    if res is None or res[1] not in ("Solve_Succeeded", "Solved_To_Acceptable_Level"):
         return None
-    i = int(np.argmax(np.where(ok, worst, -np.inf)))
-    return float(r9s[i]), float(worst[i])
+    return math.exp(res[0][0])
 
 
-def enumerate_series(spec: dict):
-    """Exhaustive search over both series: (r7, r9) or None. Used by the tests and the benchmark."""
-    s = checked(spec)
-    r9s = np.array(series.values(s["r9_series"], s["r9_min"], s["r9_max"]))
-    for r7 in series.values(s["r7_series"], s["r7_min"], s["r7_max"]):
-        best = _best_r9(r7, r9s, s)
-        if best:
-            return r7, best[0]
-    return None
+def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold: float, max_nodes: int = 100):
+    """Branch and bound over R9..R13 with R7 fixed: the network with the largest worst margin."""
+    def relaxed(lb, ub, state):
+        res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0,
+                          warm=state)
+        if res is None and state is not None:  # a warm start that fails is repeated cold before it prunes
+            res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0)
+        if res is None:
+            return None
+        x, status, new_state = res
+        if status not in ("Solve_Succeeded", "Solved_To_Acceptable_Level"):
+            return np.inf, np.sqrt(lb * ub), None  # cannot bound this box: keep it and split it
+        return float(x[6]) + 1e-9, np.exp(x[1:6]), new_state
+
+    return branch_bound.search(lists[1:], relaxed, lambda c: scores(r7, c, s), threshold, gap=GAP, scan=0,
+                               max_nodes=max_nodes, cheap_bound=lambda lb, ub: vertex_bound(r7, lb, ub, s))
 
 
-def narrowest_window(s: dict) -> float:
-    """The smallest i_must_trip / i_no_trip any R9 of the range allows (at the largest R9)."""
-    low, high = vcs_extremes(np.array([s["r9_max"]]), s)
-    return float(high[0] / low[0] * (1 + s["r7_tolerance"]) / (1 - s["r7_tolerance"]))
+def vertex_bound(r7: float, lb, ub, s: dict) -> float:
+    """An upper bound on the worst margin of every network in the box lb..ub, from its 32 vertices alone.
+
+    For one tolerance corner (signs, zener end, offset and bias fixed) the margin is monotone in each
+    resistor (the corner proof), so its largest value over the box is at a vertex; the worst margin, a
+    minimum over corners, is at most the smallest of those maxima. -inf when some corner's headroom is
+    below the limit at every vertex (no network in the box can meet it).
+    """
+    vert = np.array(list(itertools.product(*zip(lb, ub)))).T
+    lows, highs = net.trip_voltage_corners(tuple(vert), s)
+    m = np.concatenate([np.stack(lows) / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1,
+                        1 - np.stack(highs) / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"])])
+    head = np.stack(net.headroom_corners(tuple(vert), s))
+    if (head.max(axis=1) < s["input_headroom"] - 1e-12).any():
+        return -np.inf
+    return float(m.max(axis=1).min())
 
 
-def _snap(s: dict, r7_relaxed: float, r9s: np.ndarray, ratio_needed: float):
-    """The smallest series R7 from the relaxed optimum up that has a feasible series R9, with that R9."""
-    start = series.at_most(s["r7_series"], max(r7_relaxed * (1 - 1e-6), s["r7_min"]))
-    for r7_c in series.values(s["r7_series"], start, s["r7_max"]):
-        if r7_c < s["r7_min"]:
-            continue
-        best = _best_r9(r7_c, r9s, s)
-        if best:
-            return r7_c, best[0]
-    raise Infeasible(TABLE, f"no {s['r7_series']} R7 in {s['r7_min']:g}..{s['r7_max']:g} ohm with an "
-                     f"{s['r9_series']} R9 meets {s['i_no_trip']:g}..{s['i_must_trip']:g} A",
-                     {"narrowest_ratio": ratio_needed, "r7_relaxed": r7_relaxed})
+def solve(s: dict) -> dict:
+    """The smallest feasible series R7 and, with it, the network of the largest worst margin: {r7, network,
+    outcome, r7_relaxed, tried, unproven} (r7 None when there is none). Each R7 from the relaxation's bound
+    up gets its own branch and bound; the first that finds a network is the smallest (a search that stops at
+    its node limit without one is recorded in ``unproven``)."""
+    from .limiter_infeasible import best_headroom
+    found = {"r7": None, "network": None, "outcome": None, "r7_relaxed": None, "tried": 0, "unproven": ()}
+    if best_headroom(s) < s["input_headroom"]:  # exact, and cheap: no network can meet the headroom
+        return found
+    lists = [choices(s, name) for name in RESISTORS]
+    relax = Relaxation(s)
+    found["r7_relaxed"] = _root(s, relax, lists)
+    if found["r7_relaxed"] is None:
+        return found
+    for r7 in lists[0][lists[0] >= found["r7_relaxed"] * (1 - 1e-9)]:
+        found["tried"] += 1
+        out = _best_network(float(r7), s, relax, lists, s["min_margin"] - 1e-12)
+        if out.choice is not None:
+            return {**found, "r7": float(r7), "network": out.choice, "outcome": out}
+        if not out.proven:
+            found["unproven"] += (float(r7),)
+    return found
 
 
 def design(spec: dict | None = None) -> LimiterResult:
-    """Smallest R7 (least loss), then the R9 with the largest smaller margin to the two limits.
-
-    The relaxation's R7 is a lower bound on every series design; the series search starts there and walks
-    up, taking for each R7 the best series R9 (all of them are checked: the line search is exact).
-    """
+    """The smallest series R7 with the divider network of the largest worst margin; verified at every corner."""
     s = checked(spec)
-    ratio_needed = narrowest_window(s)
-    if s["i_must_trip"] / s["i_no_trip"] < ratio_needed:
-        raise Infeasible(
-            TABLE,
-            f"no R7/R9 keeps the trip current between {s['i_no_trip']:g} A and {s['i_must_trip']:g} A at every "
-            f"tolerance corner: the narrowest window these tolerances allow is i_must_trip / i_no_trip >= "
-            f"{ratio_needed:.3g} (for i_no_trip = {s['i_no_trip']:g} A, i_must_trip >= "
-            f"{ratio_needed * s['i_no_trip']:.3g} A)",
-            {"narrowest_ratio": ratio_needed, "i_must_trip_min": ratio_needed * s["i_no_trip"]})
-    x = ca.SX.sym("x", 2)
-    i_lo, i_hi = trip_currents(ca.exp(x[0]), ca.exp(x[1]), s)
-    x0 = [math.log(math.sqrt(s["r7_min"] * s["r7_max"])), math.log(s["r9_max"] / 10)]
-    sol = minimise(x[0], x, [
-        ("i_no_trip", i_lo / s["i_no_trip"], 1.0, ca.inf),
-        ("i_must_trip", i_hi / s["i_must_trip"], -ca.inf, 1.0),
-    ], x0=x0, lbx=[math.log(s["r7_min"]), math.log(s["r9_min"])], ubx=[math.log(s["r7_max"]), math.log(s["r9_max"])])
-    r7_relaxed = math.exp(sol.x[0]) if sol.success else s["r7_min"]
-    r9s = np.array(series.values(s["r9_series"], s["r9_min"], s["r9_max"]))
-    r7_c, r9_c = _snap(s, r7_relaxed, r9s, ratio_needed)
-    i_lo_c, i_hi_c = trip_currents(r7_c, r9_c, s)
-    m_lo, m_hi = limiter_margins(r7_c, r9_c, s)
-    v_nominal = an94002.v_cs_trip(s["zener_voltage"], r9_c, s["r10"], s["r11"], s["r12"], s["r13"])
-    return LimiterResult(
-        spec=s, r7=r7_c, r9=r9_c, i_trip_min=float(i_lo_c), i_trip_max=float(i_hi_c),
-        i_trip_nominal=float(v_nominal / r7_c), p_r7=s["i_no_trip"] ** 2 * r7_c,
+    found = solve(s)
+    r7, network, out = found["r7"], found["network"], found["outcome"]
+    if r7 is None:
+        from .limiter_infeasible import explain
+        explain(s, found["r7_relaxed"])
+    v = net.verify(r7, network, s)
+    m_lo, m_hi = float(v["margin_low"]), float(v["margin_high"])
+    r9, r10, r11, r12, r13 = network
+    v_nominal = an94002.v_cs_trip(s["zener_voltage"], r9, r10, r11, r12, r13)
+    result = dict(
+        spec=s, r7=r7, r9=r9, r10=r10, r11=r11, r12=r12, r13=r13, i_trip_min=float(v["i_trip_min"]),
+        i_trip_max=float(v["i_trip_max"]), i_trip_nominal=float(v_nominal / r7), v_cs_nominal=float(v_nominal),
+        p_r7=float(v["i_trip_max"]) ** 2 * r7 * (1 + s["r7_tolerance"]), margin_low=m_lo, margin_high=m_hi,
+        headroom_min=float(v["headroom_min"]),
         binding="i_no_trip (lowest trip current)" if m_lo <= m_hi else "i_must_trip (highest trip current)",
-        relaxed_binding=tuple(sol.binding()), margin_low=float(m_lo), margin_high=float(m_hi),
-        r7_relaxed=r7_relaxed, r9_relaxed=math.exp(sol.x[1]), v_cs_nominal=float(v_nominal))
+        r7_relaxed=found["r7_relaxed"], nodes=out.nodes, r7_tried=found["tried"], margin_bound=out.bound,
+        unproven=found["unproven"])
+    return LimiterResult(**result, warnings=tuple(warnings(result, s)))
 
 
-def monte_carlo_trip(r7: float, r9: float, s: dict, n: int = 100_000, seed: int = 1) -> dict:
+def warnings(r: dict, s: dict) -> list[str]:
+    """What an engineer should know about a design that meets the spec."""
+    out = []
+    limit = IC_LIMIT_MIN[s["ic"]]
+    if r["i_trip_max"] > limit:
+        out.append(f"the highest trip current {r['i_trip_max']:.3g} A is above the {s['ic']}'s own output "
+                   f"limit (minimum {limit:g} A): on some boards the IC limits first")
+    if r["p_r7"] > R7_POWER_NORMAL:
+        out.append(f"R7 dissipates up to {r['p_r7']:.3g} W at the highest trip current: more than a normal "
+                   f"{R7_POWER_NORMAL:g} W sense resistor")
+    return out
+
+
+def enumerate_series(spec: dict):
+    """Exhaustive search (every network and every R7; for reduced series only): (r7, network, worst margin)
+    or None. Used by the benchmark beside :func:`design`."""
+    s = checked(spec)
+    lists = [choices(s, name) for name in RESISTORS]
+    grid = np.array(np.meshgrid(*lists[1:], indexing="ij")).reshape(5, -1).T
+    for r7 in lists[0]:
+        sc = scores(float(r7), grid, s)
+        ok = sc >= s["min_margin"] - 1e-12
+        if ok.any():
+            j = int(np.argmax(np.where(ok, sc, -np.inf)))
+            return float(r7), tuple(float(x) for x in grid[j]), float(sc[j])
+    return None
+
+
+def monte_carlo_trip(r7: float, network, s: dict, n: int = 100_000, seed: int = 1) -> dict:
     """Trip currents of ``n`` boards, every part uniform within its tolerance (fixed seed, vectorised)."""
     s = checked(s)
     rng = np.random.default_rng(seed)
@@ -180,9 +265,10 @@ def monte_carlo_trip(r7: float, r9: float, s: dict, n: int = 100_000, seed: int 
         return x * (1 + rng.uniform(-tol, tol, n))
 
     vz_lo, vz_hi = zener_range(s)
-    vz = rng.uniform(vz_lo, vz_hi, n)
-    v = an94002.v_cs_trip(vz, u(r9, t), u(s["r10"], t), u(s["r11"], t), u(s["r12"], t), u(s["r13"], t),
-                          rng.uniform(-s["offset"], s["offset"], n))
+    r9, r10, r11, r12, r13 = (u(x, t) for x in network)
+    ib = s["input_bias"]
+    v = (an94002.v_cs_trip(rng.uniform(vz_lo, vz_hi, n), r9, r10, r11, r12, r13, rng.uniform(-s["offset"], s["offset"], n))
+         + rng.uniform(-ib, ib, n) * r12 - rng.uniform(-ib, ib, n) * (r9 + r10) * r11 / (r9 + r10 + r11) * (1 + r12 / r13))
     i = v / u(r7, s["r7_tolerance"])
     ok = (i >= s["i_no_trip"]) & (i <= s["i_must_trip"])
     return {"yield": float(ok.mean()), "i_p001": float(np.quantile(i, 0.001)),

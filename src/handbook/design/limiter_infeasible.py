@@ -1,0 +1,72 @@
+"""What can be met when no limiter network meets the spec: the message of the Infeasible the design raises.
+
+In order: the input headroom alone (its best over the resistor ranges, exact at the range's vertices by
+the corner proof of :mod:`.limiter_network`); the margin (the best worst margin any continuous network
+reaches, from the relaxation); a pinned resistor (the design repeated without each pin); the ranges.
+"""
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from . import limiter_network as net
+from .solvers import Infeasible
+
+TABLE = "current_limiter"
+
+
+def best_headroom(s: dict) -> float:
+    """The largest least headroom any network of the ranges (or pins) allows: both inputs, worst corner."""
+    from .current_limiter import choices
+    ends = [(v[0], v[-1]) for v in (choices(s, n) for n in net.DIVIDER)]
+    best_plus = max(min(net.headroom_corners((1, 1, 1, r12, r13), s)[:4]) for r12, r13 in itertools.product(*ends[3:]))
+    best_minus = max(min(net.headroom_corners((r9, r10, r11, 1, 1), s)[4:])
+                     for r9, r10, r11 in itertools.product(*ends[:3]))
+    return float(min(best_plus, best_minus))
+
+
+def best_margin(s: dict) -> float | None:
+    """The largest worst margin of any continuous network within the ranges (IPOPT on the relaxation)."""
+    from .current_limiter import RESISTORS, Relaxation, choices
+    lists = [choices(s, n) for n in RESISTORS]
+    lb, ub = np.array([v[0] for v in lists]), np.array([v[-1] for v in lists])
+    res = Relaxation(s).solve(lb, ub, [*np.log(np.sqrt(lb * ub)), 0.0], 0.0)
+    return None if res is None else float(res[0][6])
+
+
+def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
+    head = best_headroom(s)
+    if head < s["input_headroom"]:
+        return (f"no network keeps both op-amp inputs {s['input_headroom']:g} V below the supply: with D1 at its "
+                f"lowest ({net.zener_range(s)[0]:.3g} V) the best these resistor ranges allow is {head:.3g} V; use a "
+                f"higher zener_voltage, wider ranges or an op-amp that works nearer its supply (a lower "
+                f"input_headroom)", {"headroom_max": head})
+    margin = best_margin(s)
+    if margin is None or margin < s["min_margin"]:
+        shown = "none" if margin is None else f"{margin:.2%}"
+        return (f"no network keeps every corner's trip current inside {s['i_no_trip']:g} .. {s['i_must_trip']:g} A "
+                f"with a {s['min_margin']:.1%} margin: the best worst margin any network reaches is {shown}; lower "
+                f"min_margin to that, widen the window (now i_must_trip / i_no_trip = "
+                f"{s['i_must_trip'] / s['i_no_trip']:.3g}) or use tighter tolerances", {"min_margin_max": margin})
+    return (f"no {s['r7_series']} R7 within {s['r7_min']:g} .. {s['r7_max']:g} ohm has a series network meeting "
+            f"the spec (the continuous relaxation needs R7 >= {(r7_relaxed or float('nan')):.3g} ohm): widen the R7 "
+            f"range or use finer series", {"r7_relaxed": r7_relaxed})
+
+
+def explain(s: dict, r7_relaxed: float | None):
+    """Raise the Infeasible that says why, and what would be met. A pinned resistor is blamed when freeing
+    it alone lifts the cause (the headroom's exact best, or the relaxation's best margin, reaches the spec)."""
+    message, achievable = _reason(s, r7_relaxed)
+    for name in (n for n in ("r7",) + net.DIVIDER if s[n] is not None):
+        free = {**s, name: None}
+        if "headroom_max" in achievable:
+            lifted = best_headroom(free) >= s["input_headroom"]
+        else:
+            margin = best_margin(free)
+            lifted = margin is not None and margin >= s["min_margin"]
+        if lifted:
+            raise Infeasible(TABLE, f"{name} = {s[name]:g} ohm (pinned) makes the spec infeasible: {message}. Left "
+                             f"free, a network of the {s[name + '_series']} range {s[name + '_min']:g} .. "
+                             f"{s[name + '_max']:g} ohm can meet it", {**achievable, "pinned": name})
+    raise Infeasible(TABLE, message, achievable)

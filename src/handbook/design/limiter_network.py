@@ -1,0 +1,127 @@
+"""The op-amp current limiter (AN94002 figure 3) as a network: trip voltage and input headroom at every
+tolerance corner, exactly, for numpy arrays and casadi symbols alike.
+
+Node equations (AN94002 eq 11 and 12, with the op-amp's offset V_os and input bias currents I_+, I_- added;
+Z = V_s - V_D1 is the zener's low end, the sense point sits at V_s - V_cs):
+
+    V_+ = Z + (V_D1 - V_cs) R13 / (R12 + R13) + I_+ (R12 || R13)
+    V_- = Z + V_D1 R11 / (R9 + R10 + R11)     + I_- ((R9 + R10) || R11)
+
+and the op-amp trips at V_+ - V_- = V_os, so with 1/A = 1 + R12/R13 and B = R11 / (R9 + R10 + R11):
+
+    V_cs = V_D1 (1 - B/A) + I_+ R12 - (I_- R_m + V_os) / A,    R_m = (R9 + R10) || R11
+
+Why the corners are exact (:func:`corner_proof` checks it with sympy): V_cs, both headrooms and the trip
+current V_cs / R7 are, in each quantity separately, a ratio of two polynomials of degree at most one whose
+denominator is a sum of positive resistances. Such a function is monotone in that quantity over any
+interval, so its extremes over the whole tolerance box lie at a vertex of the box, and enumerating every
+vertex finds them. Here V_D1 takes both ends; V_os, I_+ and I_- enter linearly with coefficients whose
+sign is known (1, R12, R_m/A), so their worst values are written directly; the five resistors take all
+2^5 combinations. No direction of any resistor is assumed: the earlier closed form fixed the high corner at
+(R12-, R13+), which is wrong once V_D1 B + V_os < 0 and let an unsafe design through.
+"""
+from __future__ import annotations
+
+import itertools
+
+import sympy as sp
+
+#: the divider resistors, in the order of every tuple here
+DIVIDER = ("r9", "r10", "r11", "r12", "r13")
+CORNERS = tuple(itertools.product((-1, 1), repeat=5))
+
+
+def zener_range(s: dict) -> tuple[float, float]:
+    """Lowest and highest zener voltage: tolerance plus drift over the temperature span."""
+    drift = s["zener_tc"] * s["temp_span"]
+    vz = s["zener_voltage"]
+    return vz * (1 - s["zener_tolerance"]) - drift, vz * (1 + s["zener_tolerance"]) + drift
+
+
+def _corner(r, signs, t):
+    return tuple(x * (1 + t * g) for x, g in zip(r, signs))
+
+
+def trip_voltage_corners(r, s: dict, both_ends: bool = True) -> tuple[list, list]:
+    """(lows, highs): V_cs at its lowest and highest for each of the 32 resistor corners and both zener
+    ends (64 each), the offset and both bias currents at their worst. ``r`` = (R9, R10, R11, R12, R13),
+    floats, numpy arrays or casadi symbols. The lowest trip voltage is min(lows), the highest max(highs).
+
+    ``both_ends=False`` keeps only the lowest zener voltage in ``lows`` and the highest in ``highs``: the
+    others matter only where 1 - B/A <= 0, and there V_cs is negative at that corner, which the lower trip
+    limit refuses anyway (the relaxation uses this; the exact check keeps both)."""
+    vz_lo, vz_hi = zener_range(s)
+    ib, off, t = s["input_bias"], s["offset"], s["resistor_tolerance"]
+    lows, highs = [], []
+    for signs in CORNERS:
+        r9, r10, r11, r12, r13 = _corner(r, signs, t)
+        inv_a = 1 + r12 / r13
+        b = r11 / (r9 + r10 + r11)
+        r_m = (r9 + r10) * b
+        k = 1 - b * inv_a
+        err = ib * r12 + (ib * r_m + off) * inv_a
+        for vz in (vz_lo, vz_hi) if both_ends else (None,):
+            lows.append((vz_lo if vz is None else vz) * k - err)
+            highs.append((vz_hi if vz is None else vz) * k + err)
+    return lows, highs
+
+
+def headroom_corners(r, s: dict) -> list:
+    """How far each op-amp input sits below the supply, at every corner (V_cs = 0 for V_+, where it is
+    nearest the supply; V_- does not depend on V_cs): 4 corners of (R12, R13), 8 of (R9, R10, R11), the
+    lowest zener voltage and the bias current pushing each input up."""
+    vz_lo, _ = zener_range(s)
+    ib, t = s["input_bias"], s["resistor_tolerance"]
+    r9, r10, r11, r12, r13 = r
+    out = []
+    for g12, g13 in itertools.product((-1, 1), repeat=2):
+        a12, a13 = r12 * (1 + t * g12), r13 * (1 + t * g13)
+        out.append((vz_lo * a12 - ib * a12 * a13) / (a12 + a13))
+    for g9, g10, g11 in itertools.product((-1, 1), repeat=3):
+        upper, a11 = (r9 * (1 + t * g9) + r10 * (1 + t * g10)), r11 * (1 + t * g11)
+        out.append(upper * (vz_lo - ib * a11) / (upper + a11))
+    return out
+
+
+def trip_currents(r7, r, s: dict):
+    """(lowest, highest) trip current over every corner, R7's tolerance included (numpy or floats); a
+    negative trip voltage (a network that trips with no current) divides by the smallest R7."""
+    import numpy as np
+    lows, highs = trip_voltage_corners(r, s)
+    low, high = np.min(np.stack(lows), axis=0), np.max(np.stack(highs), axis=0)
+    r_lo, r_hi = r7 * (1 - s["r7_tolerance"]), r7 * (1 + s["r7_tolerance"])
+    return np.where(low > 0, low / r_hi, low / r_lo), np.where(high > 0, high / r_lo, high / r_hi)
+
+
+def verify(r7, r, s: dict) -> dict:
+    """Every figure of one network (or of arrays of networks) at its exact worst corners."""
+    import numpy as np
+    i_lo, i_hi = trip_currents(r7, r, s)
+    m_lo, m_hi = i_lo / s["i_no_trip"] - 1, 1 - i_hi / s["i_must_trip"]
+    headroom = np.min(np.stack(headroom_corners(r, s)), axis=0)
+    ok = (np.minimum(m_lo, m_hi) >= s["min_margin"] - 1e-12) & (headroom >= s["input_headroom"] - 1e-12) & (i_lo > 0)
+    return {"i_trip_min": i_lo, "i_trip_max": i_hi, "margin_low": m_lo, "margin_high": m_hi,
+            "headroom_min": headroom, "ok": ok}
+
+
+def corner_proof() -> dict:
+    """sympy: {(expression, quantity): (degree of the numerator, of the denominator, denominator a sum of
+    positive terms)} for V_cs, the trip current and both headrooms. All degrees at most 1 and positive
+    denominators: each is monotone in each quantity over
+    the tolerance box, so the extremes lie at its vertices (the module's docstring)."""
+    r7, r9, r10, r11, r12, r13 = sp.symbols("R7 R9 R10 R11 R12 R13", positive=True)
+    vd1, vcs, vos, ip, im, z = sp.symbols("V_D1 V_cs V_os I_p I_m Z", real=True)
+    v_plus = z + (vd1 - vcs) * r13 / (r12 + r13) + ip * r12 * r13 / (r12 + r13)
+    v_minus = z + vd1 * r11 / (r9 + r10 + r11) + im * (r9 + r10) * r11 / (r9 + r10 + r11)
+    trip = sp.solve(sp.Eq(v_plus - v_minus, vos), vcs)[0]
+    exprs = {"V_cs": trip, "I_trip": trip / r7,
+             "headroom_plus": sp.together((z + vd1) - v_plus.subs(vcs, 0)),
+             "headroom_minus": sp.together((z + vd1) - v_minus)}
+    out = {}
+    for name, e in exprs.items():
+        num, den = sp.fraction(sp.together(sp.expand(e)))
+        positive = all(c > 0 for c in sp.Poly(sp.expand(den), r7, r9, r10, r11, r12, r13).coeffs())
+        for q in (r7, r9, r10, r11, r12, r13, vd1, vos, ip, im):
+            if e.has(q):
+                out[(name, str(q))] = (sp.degree(num, q), sp.degree(den, q), positive)
+    return out
