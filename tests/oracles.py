@@ -10,41 +10,109 @@ from handbook.core import series
 from handbook.design.schema import defaults
 
 
+def _corner_values(f, **ranges):
+    """f at every corner of the box (each argument at either end of its (low, high) range)."""
+    names = list(ranges)
+    return [f(**dict(zip(names, ends))) for ends in itertools.product(*(ranges[n] for n in names))]
+
+
 def enumerate_cap(spec):
+    """CAP-CD: the first series value (1 pF up) whose swing I t_com / C fits V_high - V_low at all 16 corners
+    at rpm_min; None unless its swing at rpm_max stays above the floor at all 4 corners."""
     s = {**defaults("commutation"), **spec}
-    t_slow, t_fast = 10 / (s["rpm_min"] * s["pole_pairs"]), 10 / (s["rpm_max"] * s["pole_pairs"])
+    tol, n = s["tolerance"], s["pole_pairs"]
+    t_slow, t_fast = 10 / (s["rpm_min"] * n), 10 / (s["rpm_max"] * n)
+    currents = (s["i_charge_min"], s["i_charge_max"])
     for c in series.values(s["series"], 1e-12, 1e-3):
-        if s["i_charge_max"] * t_slow / (c * (1 - s["tolerance"])) <= s["window"] * (1 + 1e-12):
-            ok = s["i_charge_min"] * t_fast / (c * (1 + s["tolerance"])) >= s["min_excursion"] * (1 - 1e-12)
+        caps = (c * (1 - tol), c * (1 + tol))
+        excess = _corner_values(lambda i, k, vl, vh: i * t_slow / k - (vh - vl), i=currents, k=caps,
+                                vl=(s["v_low_min"], s["v_low_max"]), vh=(s["v_high_min"], s["v_high_max"]))
+        if max(excess) <= 1e-12:
+            swings = _corner_values(lambda i, k: i * t_fast / k, i=currents, k=caps)
+            return c if min(swings) >= s["min_excursion"] * (1 - 1e-12) else None
+    return None
+
+
+def enumerate_cap_st(spec):
+    """CAP-ST: the first series value whose shortest start period 2 C dV / I (32 corners with the motor's)
+    outlasts the rocking's decay ln(1/r) / sigma, sigma = w_n (zeta - sqrt(zeta^2 - 1) if overdamped),
+    w_n = sqrt(K_t I p / J); None if its longest period then exceeds t_start_max."""
+    s = {**defaults("commutation"), **spec}
+    tol, mt, z = s["tolerance"], s["motor_tolerance"], s["damping_ratio"]
+    spread = lambda x, t: (x * (1 - t), x * (1 + t))  # noqa: E731
+    w_n = _corner_values(lambda k, i, j: (k * i * s["pole_pairs"] / j) ** 0.5, k=spread(s["torque_constant"], mt),
+                         i=spread(s["start_current"], mt), j=spread(s["inertia"], mt))
+    settle = max(np.log(1 / s["residual"]) / (w * (z - max(z * z - 1, 0) ** 0.5)) for w in w_n)
+    dv = s["v_st_high"] - s["v_st_low"]
+    for c in series.values(s["series"], 1e-12, 1e-3):
+        periods = _corner_values(lambda k, i: 2 * k * dv / i, k=spread(c, tol), i=(s["i_st_min"], s["i_st_max"]))
+        if min(periods) >= settle * (1 - 1e-12):
+            ok = s["t_start_max"] is None or max(periods) <= s["t_start_max"] * (1 + 1e-12)
             return c if ok else None
     return None
 
 
-def corners_vcs(r9, s):
-    """All 128 corners, written out independently of design.vcs_extremes."""
-    t = s["resistor_tolerance"]
-    drift = s["zener_tc"] * s["temp_span"]
-    vals = []
-    for sg in itertools.product((-1, 1), repeat=7):
-        r9_, r10, r11, r12, r13 = (x * (1 + t * g) for x, g in
-                                   zip((r9, s["r10"], s["r11"], s["r12"], s["r13"]), sg[:5]))
-        vz = s["zener_voltage"] * (1 + s["zener_tolerance"] * sg[5]) + drift * sg[5]
-        a, b = r13 / (r12 + r13), r11 / (r9_ + r10 + r11)
-        vals.append(vz * (1 - b / a) - s["offset"] * sg[6] / a)
-    vals = np.array(vals)
-    return vals.min(axis=0), vals.max(axis=0)
+def enumerate_cap_ti(spec):
+    """CAP-TI (>= 2000 pF): watchdog C 1.9 V / I at 4 corners; shortest >= flyback_time; with rpm_reverse the
+    longest <= 150 electrical degrees of reverse travel, 25 / (rpm n), and the value with the largest smaller
+    ratio. None if no value passes."""
+    s = {**defaults("commutation"), **spec}
+    tol, n = s["tolerance"], s["pole_pairs"]
+    t_rev = None if s["rpm_reverse"] is None else 25 / (s["rpm_reverse"] * n)
+    best = None
+    for c in series.values(s["series"], 2e-9, 1e-3):
+        t_wd = _corner_values(lambda k, i: k * 1.9 / i, k=(c * (1 - tol), c * (1 + tol)),
+                              i=(s["i_wd_min"], s["i_wd_max"]))
+        if min(t_wd) < s["flyback_time"] * (1 - 1e-12) or (t_rev is not None and max(t_wd) > t_rev * (1 + 1e-12)):
+            continue
+        if t_rev is None:
+            return c
+        score = min(min(t_wd) / s["flyback_time"], t_rev / max(t_wd))
+        if best is None or score > best[0]:
+            best = (score, c)
+    return None if best is None else best[1]
+
+
+def limiter_corners(r7, network, s):
+    """Every corner of the op-amp limiter, 2^10 of them (R7, R9..R13, zener end, offset and both bias
+    currents at either sign), written from the node equations: V_+ = Z + (V_D1 - V_cs) R13/(R12 + R13)
+    + I_p R12||R13 and V_- = Z + V_D1 R11/(R9 + R10 + R11) + I_m (R9 + R10)||R11 meet at V_+ - V_- = V_os.
+    ``network`` = (R9, R10, R11, R12, R13), each a float or an array (networks side by side).
+    Returns (lowest trip current, highest trip current, least headroom of the two inputs), all exact."""
+    t, ib = s["resistor_tolerance"], s["input_bias"]
+    vz0, dz = s["zener_voltage"], s["zener_voltage"] * s["zener_tolerance"] + s["zener_tc"] * s["temp_span"]
+    net = [np.asarray(x, dtype=float) for x in network]
+    i_lo = np.full(np.broadcast(*net).shape, np.inf)
+    i_hi, head = -i_lo, i_lo.copy()
+    for sg in itertools.product((-1.0, 1.0), repeat=5):
+        r9, r10, r11, r12, r13 = (x * (1 + t * g) for x, g in zip(net, sg))
+        a = r13 / (r12 + r13)
+        r_plus, r_minus = r12 * r13 / (r12 + r13), (r9 + r10) * r11 / (r9 + r10 + r11)
+        for vz, vos, i_p, i_m in itertools.product((vz0 - dz, vz0 + dz), (-s["offset"], s["offset"]), (-ib, ib), (-ib, ib)):
+            v_cs = vz - (vz * r11 / (r9 + r10 + r11) + i_m * r_minus - i_p * r_plus + vos) / a
+            for r7_ in (r7 * (1 - s["r7_tolerance"]), r7 * (1 + s["r7_tolerance"])):
+                i_lo, i_hi = np.minimum(i_lo, v_cs / r7_), np.maximum(i_hi, v_cs / r7_)
+            head = np.minimum(head, np.minimum(vz - vz * a - i_p * r_plus, vz - vz * r11 / (r9 + r10 + r11) - i_m * r_minus))
+    return i_lo, i_hi, head
 
 
 def enumerate_limiter(spec):
+    """Exhaustive: every network of the (reduced) series and every R7; (r7, network, worst margin) of the
+    smallest feasible R7 and, with it, the largest worst margin; None when nothing is feasible."""
     s = {**defaults("current_limiter"), **spec}
-    r9s = np.array(series.values(s["r9_series"], s["r9_min"], s["r9_max"]))
-    lo, hi = corners_vcs(r9s, s)
-    for r7 in series.values(s["r7_series"], s["r7_min"], s["r7_max"]):
-        i_lo, i_hi = lo / (r7 * (1 + s["r7_tolerance"])), hi / (r7 * (1 - s["r7_tolerance"]))
-        margin = np.minimum(i_lo / s["i_no_trip"] - 1, 1 - i_hi / s["i_must_trip"])
-        if (margin >= -1e-12).any():
-            return r7, float(r9s[np.argmax(margin)])
-    return None
+    lists = [[s[n]] if s.get(n) is not None else series.values(s[n + "_series"], s[n + "_min"], s[n + "_max"])
+             for n in ("r7", "r9", "r10", "r11", "r12", "r13")]
+    grid = np.array(np.meshgrid(*lists[1:], indexing="ij")).reshape(5, -1)
+    lo, hi, head = limiter_corners(1.0, grid, s)  # trip currents scale as 1/R7
+    best = None
+    for r7 in lists[0]:
+        worst = np.minimum(lo / r7 / s["i_no_trip"] - 1, 1 - hi / r7 / s["i_must_trip"])
+        ok = (worst >= s["min_margin"] - 1e-12) & (head >= s["input_headroom"] - 1e-12) & (lo > 0)
+        if ok.any():
+            j = int(np.argmax(np.where(ok, worst, -np.inf)))
+            best = (r7, tuple(float(x) for x in grid[:, j]), float(worst[j]))
+            break
+    return best
 
 
 def _clip_model():
@@ -63,19 +131,68 @@ def _clip_model():
 p_clip = _clip_model()
 
 
+def _class_d_heat(s, f):
+    """theta_SA needed at oscillator frequency f: T_j at 150 C less the margin, R_DS(on) 300 mOhm max at 25 C
+    rising as the datasheet's 200 -> 230 mOhm (25 -> 100 C), eq 9/10 with 25 + 26 + 350 ns, and the idle
+    loss of 55 % at 5 W less the LM4651's own 36 mA."""
+    p = p_clip(f, s["r_load"], s["supply"]) if s["p_continuous"] is None else s["p_continuous"]
+    t_j = 150.0 - s["tj_margin"]
+    x = (25e-9 + 26e-9 + s["t_overmod"]) * f
+    x5 = (25e-9 + 26e-9 + 310e-9) * 125e3
+    idle = (5 / 0.55 - 5 - 5 / 4 * 2 * 0.2 - x5 * 5 / (1 - x5)) * s["supply"] / 20 - 0.036 * 2 * s["supply"]
+    watts = x * p / (1 - x) + idle + p / s["r_load"] * 2 * s["rds_on_25"] * (1 + 0.15 / 75 * (t_j - 25))
+    return (t_j - s["t_ambient"]) / watts - {"TF": 2.0, "T": 1.0}[s["package"]] - s["theta_cs"]
+
+
+def _band_ok(s, L, C):
+    """Loaded filter |H| across 0..f_audio by a dense sweep (not the closed form), and its Q, per (L, C)."""
+    f = np.linspace(0, s["f_audio"], 801)
+    h = np.abs(1 / (1 + 2j * np.pi * f * 2 * L[..., None] / s["r_load"]
+                    - (2 * np.pi * f) ** 2 * 2 * L[..., None] * C[..., None]))
+    dev = 20 * np.abs(np.log10(h)).max(-1)
+    q = s["r_load"] * np.sqrt(C / (2 * L))
+    return (dev <= s["droop_max"] * (1 + 1e-9)) & (q <= s["q_max"] * (1 + 1e-9))
+
+
 def enumerate_class_d(spec):
+    """Every series R_OSC x L x C_BYP at all eight corners (oscillator -20 %/+23.5 %, L and C +-tolerance):
+    the best feasible (R_OSC, L, C, R_DLY), or None. Written from the datasheet's numbers alone."""
     s = {**defaults("class_d"), **spec}
-    best = None
-    for r in series.values(s["r_osc_series"], 10, 1e6):
-        f = 1e9 / (4000 + r - 0.4 * s["r_dly"])
-        if not 50e3 <= f <= 225e3:
-            continue
-        x = (25e-9 + 26e-9 + 310e-9) * f
-        p = x * s["p_out"] / (1 - x) + s["p_out"] / s["r_load"] * 0.46
-        thd_ok = 0.003 * (125e3 / f) ** 2 <= s["thd_max"] * (1 + 1e-9)
-        clip_ok = p_clip(f, s["r_load"], s["supply"]) >= s["p_out"] * (1 - 1e-9)
-        need = (150 - s["t_ambient"]) / p - {"TF": 2.0, "T": 1.0}[s["package"]] - s["theta_cs"]
-        heat_ok = need > 0 and (s["theta_sa_available"] is None or s["theta_sa_available"] <= need * (1 + 1e-9))
-        if thd_ok and clip_ok and heat_ok and (best is None or p < best[0]):
-            best = (p, r)
-    return None if best is None else best[1]
+    r_dly = next(r for r in [0.0] + series.values(s["r_dly_series"], 1, 1e6)
+                 if 27e-9 + 1.7e-12 * r >= s["dead_time_min"] * (1 - 1e-12))
+    r = np.array(series.values(s["r_osc_series"], 100, 1e5))
+    f = 1e9 / (4000 + r - 0.4 * r_dly)
+    slow, fast = 1 - s["osc_tol_slow"], 1 + s["osc_tol_fast"]
+    r, f = r[(f > 0) & (f * slow >= 50e3 * (1 - 1e-12)) & (f * fast <= 225e3 * (1 + 1e-12))], \
+        f[(f > 0) & (f * slow >= 50e3 * (1 - 1e-12)) & (f * fast <= 225e3 * (1 + 1e-12))]
+    ls, cs = np.array(series.values(s["l_series"], 1e-6, 1e-3)), np.array(series.values(s["c_series"], 1e-7, 1e-4))
+    F, L, C = np.meshgrid(f, ls, cs, indexing="ij")
+    ok = np.ones(F.shape, dtype=bool)
+    v, rl = s["supply"], s["r_load"]
+    for so, sl, sc in itertools.product((slow, fast), (-1, 1), (-1, 1)):
+        fc, lc, cc = F * so, L * (1 + sl * s["l_tolerance"]), C * (1 + sc * s["c_tolerance"])
+        w = 2 * np.pi * fc
+        thd = 0.003 * (125e3 / fc) ** 2 * (250e-12 / (lc * cc)) * v / 20 * np.sqrt(40 / (s["thd_test_power"] * rl))
+        h = np.abs(1 / (1 + 1j * w * 2 * lc / rl - w ** 2 * 2 * lc * cc))
+        ripple = 4 * 2 * v / np.pi * h / np.sqrt(2)
+        v_pk = np.sqrt(2 * rl * p_clip(fc, rl, v))
+        i_pk = v_pk * np.hypot(1 / rl, 2 * np.pi * s["f_audio"] * cc) + v / (4 * lc * fc)
+        ok &= (thd <= s["thd_max"] * (1 + 1e-9)) & (ripple <= s["ripple_max"] * (1 + 1e-9))
+        ok &= i_pk <= min(s["i_sat"], 10.0) * (1 + 1e-9)
+    for sl, sc in itertools.product((-1, 1), (-1, 1)):  # the filter alone: on the (L, C) plane
+        l2, c2 = np.meshgrid(ls * (1 + sl * s["l_tolerance"]), cs * (1 + sc * s["c_tolerance"]), indexing="ij")
+        ok &= _band_ok(s, l2, c2)[None]
+    theta = np.minimum(_class_d_heat(s, F * slow), _class_d_heat(s, F * fast))
+    sink = 0.0 if s["theta_sa_available"] is None else s["theta_sa_available"]
+    ok &= (p_clip(F * fast, rl, v) >= s["p_out"] * (1 - 1e-9)) & (theta >= sink * (1 + 1e-9) - 1e-12)
+    p = s["p_out"]
+    x = (25e-9 + 26e-9 + 310e-9) * F
+    x5 = (25e-9 + 26e-9 + 310e-9) * 125e3
+    idle = (5 / 0.55 - 5 - 0.5 - x5 * 5 / (1 - x5)) * v / 20
+    eff = p / (p + p / rl * 2 * 0.230 + x * p / (1 - x) + idle + p / rl * 2 * s["l_dcr"] * L)
+    if not ok.any():
+        return None
+    keys = (eff, theta) if s["objective"] == "efficiency" else (theta, eff)
+    i = np.lexsort((C[ok], L[ok], -keys[1][ok], -keys[0][ok]))[0]
+    r_osc = 1e9 / F[ok][i] - 4000 + 0.4 * r_dly
+    return float(r[np.argmin(np.abs(r - r_osc))]), float(L[ok][i]), float(C[ok][i]), float(r_dly)

@@ -72,10 +72,13 @@ def cmd_design(args) -> int:
     if args.json:
         print(json.dumps(out, indent=1))
     else:
+        from .design.schema import OUTPUTS
+        from .report.tables import shown_value
+
         for table, values in out.items():
             print(f"[{table}]")
-            for k, v in values.items():
-                print(f"  {k:20s} {v:.6g}" if isinstance(v, float) else f"  {k:20s} {v}")
+            for o in OUTPUTS[table]:
+                print(f"  {o.label:45s} {shown_value(values[o.key], o.unit)}")
     return 0
 
 

@@ -17,9 +17,22 @@ def test_design_cli_empty_spec_designs_the_notes_examples(tmp_path):
     out = _run(tmp_path, "", "--json")
     assert out.returncode == 0, out.stderr
     r = json.loads(out.stdout)
-    assert r["commutation"]["cap_cd"] == 1.8e-8
-    assert {"r7", "r9", "i_trip_min", "i_trip_max", "i_trip_nominal", "p_r7", "binding"} <= set(r["current_limiter"])
-    assert {"f_sw", "r_osc", "efficiency", "p_dissipation", "theta_sa_required", "t_junction", "binding"} <= set(r["class_d"])
+    # 11 uA (the source column's maximum) x t_com(1800 rpm, 6 pole pairs) = 10 / 10800 s, into the narrowest
+    # window 2.3 V - 0.9 V at -5 %: 7.66 nF -> E12 8.2 nF (the note's 18 nF used the 22 uA sink current)
+    assert 11e-6 * 10 / 10800 / (1.4 * 0.95) == pytest.approx(7.658e-9, rel=1e-3)
+    assert r["commutation"]["cap_cd"] == 8.2e-9 and r["commutation"]["cap_st"] is None
+    assert {"cap_cd", "rpm_min_reliable", "rpm_max_reliable", "cap_st", "cap_ti", "warnings"} <= set(r["commutation"])
+    assert {"r7", "r9", "r10", "r11", "r12", "r13", "i_trip_min", "i_trip_max", "margin_low", "margin_high",
+            "headroom_min", "warnings", "i_trip_nominal", "p_r7", "binding"} <= set(r["current_limiter"])
+    assert {"f_sw", "f_sw_min", "f_sw_max", "r_osc", "r_dly", "l_out", "c_out", "theta_sa_required", "t_junction",
+            "p_dissipation", "efficiency", "thd_n", "warnings", "binding"} <= set(r["class_d"])
+    assert all(isinstance(r[t]["warnings"], list) for t in r)
+
+
+def test_design_cli_text_output_has_units(tmp_path):
+    out = _run(tmp_path, "")
+    assert out.returncode == 0, out.stderr
+    assert "8.2 nF" in out.stdout and "390 mΩ" in out.stdout and " kHz" in out.stdout and "e-0" not in out.stdout
 
 
 @pytest.mark.parametrize("text,needle", [
@@ -42,7 +55,9 @@ def test_design_cli_unmeetable_spec_exits_3_with_what_can_be_met(tmp_path):
     out = _run(tmp_path, "[commutation]\nrpm_max = 50000\n", "--json")
     assert out.returncode == 3 and "Traceback" not in out.stderr
     info = json.loads(out.stdout)["infeasible"]
-    assert info["table"] == "commutation" and info["achievable"]["rpm_max_reliable"] == pytest.approx(9347.44, rel=1e-4)
+    # 8.2 nF at +5 % with the smallest current 5.3 uA swings 0.1 V (the noise floor) up to 10 259 rpm
+    expected = 5.3e-6 * 10 / (6 * 8.2e-9 * 1.05 * 0.1)
+    assert info["table"] == "commutation" and info["achievable"]["rpm_max_reliable"] == pytest.approx(expected, rel=1e-6)
 
 
 def test_bom_written_on_success_and_never_on_failure(tmp_path):
@@ -52,9 +67,9 @@ def test_bom_written_on_success_and_never_on_failure(tmp_path):
     out = _run(tmp_path, "[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n", "--bom", str(bom))
     assert out.returncode == 0, out.stderr
     rows = {r["reference"]: r for r in csv.DictReader(bom.open())}
-    assert float(rows["C3"]["value"]) == pytest.approx(56e-9)  # 22 uA x 10/3000 s / 1.4 V / 0.95 = 55.1 nF -> E12 56 nF
+    assert float(rows["C3"]["value"]) == pytest.approx(33e-9)  # 11 uA x 10/3000 s / 1.4 V / 0.95 = 27.6 nF -> E12 33 nF
     assert rows["C3"]["series"] == "E12" and "window" in rows["C3"]["reason"]
-    assert {"C3", "C4", "R7", "R9", "R_OSC"} <= set(rows)
+    assert {"C3", "C4", "R7", "R9", "R10", "R11", "R12", "R13", "R_OSC", "R_DLY", "C_BYP"} <= set(rows)
     bom.unlink()
     for text, code in (("[commutation]\nrpm_max = 50000\n", 3), ("[commutation]\nrpm_min = -1\n", 2)):
         out = _run(tmp_path, text, "--bom", str(bom))

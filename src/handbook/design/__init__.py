@@ -1,8 +1,12 @@
-"""Component choice: one module per design, each ``checked -> solve -> snap -> verify -> Result``.
+"""Component choice: one module per design, each ``checked -> solve -> snap -> verify -> Result``, every
+design re-verified at every tolerance corner.
 
-* :mod:`~handbook.design.commutation`: CAP-CD/CAP-DC for the TDA5143/5144;
-* :mod:`~handbook.design.current_limiter`: R7 and R9 of the op-amp current limiter;
-* :mod:`~handbook.design.class_d`: the LM4651/LM4652 switching frequency and R_OSC.
+* :mod:`~handbook.design.commutation`: the TDA5143/5144 timing set, CAP-CD/CAP-DC from the speed range and
+  CAP-ST/CAP-TI from motor data (closed forms, exact; :mod:`.commutation_timers`, :mod:`.commutation_checks`);
+* :mod:`~handbook.design.current_limiter`: the op-amp limiter's whole network R7, R9..R13 (branch and
+  bound over IPOPT relaxations, :mod:`.branch_bound`; exact corners in :mod:`.limiter_network`);
+* :mod:`~handbook.design.class_d`: the LM4651/LM4652 switching frequency, R_OSC, R_DLY, output filter and
+  heat sink as one design (IPOPT, then a proven series search; :mod:`.class_d_model`, :mod:`.class_d_report`).
 
 :mod:`~handbook.design.schema` holds the specification (every key's default, unit, range, meaning) and
 the results each design reports; :mod:`~handbook.design.spec` reads and runs a TOML specification;

@@ -13,24 +13,37 @@ def rows(result: dict) -> list[dict]:
     sc, sl, sd = c.spec, lim.spec, cd.spec
     table = [
         ("C3", c.cap_cd, sc["tolerance"], sc["series"],
-         f"CAP-CD: smallest value whose swing at {sc['rpm_min']:g} rpm fits the {sc['window']:g} V window at "
-         f"-tolerance; reliable {c.rpm_min_reliable:.0f} to {c.rpm_max_reliable:.0f} rpm"),
+         f"CAP-CD: smallest value whose swing at {sc['rpm_min']:g} rpm fits the {sc['v_high_min']:g} V - "
+         f"{sc['v_low_max']:g} V window at every tolerance corner; reliable {c.rpm_min_reliable:.0f} to "
+         f"{c.rpm_max_reliable:.0f} rpm"),
         ("C4", c.cap_dc, sc["tolerance"], sc["series"], "CAP-DC: the slave timer needs the same value as CAP-CD"),
+        *([("C5", c.cap_st, sc["tolerance"], sc["series"],
+            f"CAP-ST: smallest value whose shortest start period ({c.start.period_min:.3g} s) outlasts the decay of "
+            f"the slowest rotor rocking ({c.start.f_osc_min:.3g} Hz) to {sc['residual']:g}")] if c.start else []),
+        *([("C6", c.cap_ti, sc["tolerance"], sc["series"],
+            f"CAP-TI: watchdog {c.watchdog.t_wd_min * 1e3:.3g} to {c.watchdog.t_wd_max * 1e3:.3g} ms outlasts the "
+            f"{sc['flyback_time'] * 1e3:.3g} ms flyback; catches reverse rotation up to "
+            f"{c.watchdog.rpm_reverse_caught:.0f} rpm")] if c.watchdog else []),
         ("R7", lim.r7, sl["r7_tolerance"], sl["r7_series"],
-         f"current sense: smallest value that keeps every board's trip current in {sl['i_no_trip']:g}.."
-         f"{sl['i_must_trip']:g} A ({lim.i_trip_min:.3f}..{lim.i_trip_max:.3f} A worst case); "
-         f"{lim.p_r7:.3g} W at {sl['i_no_trip']:g} A"),
-        ("R9", lim.r9, sl["resistor_tolerance"], sl["r9_series"],
-         f"trip reference: largest smaller margin to the two limits with this R7 ({lim.binding} binds)"),
-        ("R10", sl["r10"], sl["resistor_tolerance"], "", "board value (AN94002 parts list), reference divider"),
-        ("R11", sl["r11"], sl["resistor_tolerance"], "", "board value, reference divider"),
-        ("R12", sl["r12"], sl["resistor_tolerance"], "", "board value, level shift"),
-        ("R13", sl["r13"], sl["resistor_tolerance"], "", "board value, level shift"),
+         f"current sense: smallest value with which every board's trip current stays in {sl['i_no_trip']:g}.."
+         f"{sl['i_must_trip']:g} A with a {sl['min_margin']:.0%} margin ({lim.i_trip_min:.3f}..{lim.i_trip_max:.3f} A "
+         f"at the worst corners); up to {lim.p_r7:.3g} W while it holds a stalled motor"),
+        *((f"R{n}", getattr(lim, f"r{n}"), sl["resistor_tolerance"], sl[f"r{n}_series"],
+           ("pinned by the spec; " if sl[f"r{n}"] is not None else "")
+           + f"{role}: network of the largest worst margin with this R7 ({lim.binding} binds)")
+          for n, role in ((9, "trip reference"), (10, "reference divider"), (11, "reference divider"),
+                          (12, "level shift"), (13, "level shift"))),
         ("D1", sl["zener_voltage"], sl["zener_tolerance"], "", "zener bridging the level shift (BZX79-C8V2 on the board)"),
         ("R_OSC", cd.r_osc, 0.01, sd["r_osc_series"],
-         f"sets f_sw = {cd.f_sw / 1e3:.1f} kHz: most efficient frequency meeting THD+N and clipping "
-         f"({cd.binding} binds); heat sink {cd.theta_sa_required:.2f} K/W or better"),
-        ("R_DLY", sd["r_dly"], 0.01, "", "dead-time resistor as specified (datasheet's recommended 5 k)"),
+         f"sets f_sw = {cd.f_sw / 1e3:.1f} kHz by eq 5 ({cd.f_sw_min / 1e3:.1f} to {cd.f_sw_max / 1e3:.1f} kHz "
+         f"at the oscillator's tolerance): joint optimum ({sd['objective']}) with L and C_BYP; binds: {cd.binding}"),
+        ("R_DLY", cd.r_dly, 0.01, sd["r_dly_series"],
+         f"dead time {sd['dead_time_min'] * 1e9:.1f} ns or more (27 ns + 1.7 pF x R_DLY), the least: more costs THD"),
+        ("L1, L2", cd.l_out, sd["l_tolerance"], sd["l_series"],
+         f"bridge output filter, one per output; saturation {sd['i_sat']:g} A or more"),
+        ("C_BYP", cd.c_out, sd["c_tolerance"], sd["c_series"], "bridge output filter across the load, film"),
+        ("heat sink", cd.theta_sa_required, 0.0, "K/W",
+         f"LM4652 heat sink of {cd.theta_sa_required:.2f} K/W or better: T_j {cd.t_junction:.0f} C at worst"),
     ]
     return [{"reference": r, "value": v, "tolerance": t, "series": ser, "reason": why} for r, v, t, ser, why in table]
 

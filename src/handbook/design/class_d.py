@@ -1,40 +1,70 @@
-"""The LM4651/LM4652 switching frequency and R_OSC: the most efficient frequency meeting THD+N, clipping
-power and the heat sink.
+"""LM4651/LM4652 class-D amplifier as a joint design: R_OSC, R_DLY, the output filter's L and C_BYP and the
+heat sink, chosen together.
 
-Problem (f in kHz, 50..225): minimise the LM4652's dissipation at p_out (eq 9, 10 and conduction) subject
-to THD+N(f) <= thd_max, P_clip(f) >= p_out, and with a given heat sink T_a + P_D (theta_JC + theta_CS +
-theta_SA) <= T_jmax. solve (IPOPT) -> snap (R_OSC from the series, eq 6 with the R_DLY correction) ->
-verify (every figure at the frequency that resistor really gives) -> Result.
+Problem. Choose R_OSC (``r_osc_series``), L (``l_series``) and C_BYP (``c_series``) to maximise the
+efficiency at p_out (``objective = "efficiency"``) or the heat sink's allowed theta_SA (``"heat_sink"``),
+subject at the worst of eight tolerance corners (oscillator slow/fast from eq 5 against the datasheet
+table, L and C each +-tolerance; :mod:`~handbook.design.class_d_model`) to: THD+N at ``thd_test_power``;
+no clipping at p_out; the switching residue at the load; the loaded filter flat across the audio band and
+its Q; the inductor's peak current below its saturation and the 10 A limit; the oscillator inside
+50..225 kHz; and the junction at T_jmax - tj_margin with R_DS(on) maximum at temperature, carrying
+p_continuous. R_DLY is closed form and exact: the smallest series value whose dead time meets
+``dead_time_min`` (the datasheet: more dead time only costs THD).
+
+Method. f_sw, L and C trade ripple and THD (both want f^2 L C large) against the audio band and Q (which
+bound L C and C / L) and against the losses (switching grows with f, the coils' loss with L): IPOPT
+solves that continuous problem (:func:`solve`, every constraint at every corner). :func:`snap` takes the
+best series design near its optimum and then certifies it exactly: both objectives depend on R_OSC and L
+alone, so every (R_OSC, L) pair at least as good is searched with every C_BYP, and nothing outside can
+win. :func:`enumerate_series` is the exhaustive check over the whole grid (the tests carry their own,
+written independently). The oscillator corners, L and C corners are enumerated (8), never assumed.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
 import casadi as ca
+import numpy as np
 
 from ..core import series
 from ..sources.lm4651 import circuit as lm4651
+from . import class_d_model as model
+from .class_d_model import best, grid
+from .class_d_report import binding_text, infeasible, warnings
 from .common import Result, completed
-from .solvers import Infeasible, minimise
+from .solvers import IPOPT_OPTIONS, Infeasible, Solution
 
 TABLE = "class_d"
+DEV = lm4651.DEVICE
+L_RANGE, C_RANGE, R_DLY_RANGE = model.L_RANGE, model.C_RANGE, model.R_DLY_RANGE
+#: the incumbent's window around IPOPT's optimum, a factor either way on f, L and C
+SPREAD = 1.5
+#: scales of the solver's variables: f in 100 kHz, L in 100 uH, C in 10 uF
+F_S, L_S, C_S = 1e5, 1e-4, 1e-5
 
 
 @dataclass(frozen=True)
 class ClassDResult(Result):
     f_sw: float
+    f_sw_min: float
+    f_sw_max: float
     r_osc: float
+    r_dly: float
+    l_out: float
+    c_out: float
     efficiency: float
     p_dissipation: float
-    p_total: float
     theta_sa_required: float
     t_junction: float
     thd_n: float
     p_clip: float
     binding: str
-    f_continuous: float
-    band: tuple
+    warnings: list
+    figures: dict
+    continuous: tuple  # IPOPT's (f_sw, L, C) before the snap
+    band: tuple  # the f_sw corners (slow, fast)
 
     table = TABLE
 
@@ -43,143 +73,145 @@ def checked(spec: dict | None) -> dict:
     return completed(TABLE, spec)
 
 
-def evaluate(f_sw: float, s: dict, rtol: float = 1e-9) -> dict:
-    """Every figure of merit at one switching frequency (plain floats; the independent re-check)."""
-    p4652, total, eff = lm4651.losses(f_sw, s["p_out"], s["r_load"])
-    need = lm4651.theta_sa_required(p4652, s["t_ambient"], s["package"], s["theta_cs"])
-    sink = s["theta_sa_available"]
-    tj = lm4651.t_junction(p4652, s["t_ambient"], need if sink is None else sink, s["package"], s["theta_cs"])
-    return {"f_sw": f_sw, "efficiency": eff, "p_dissipation": p4652, "p_total": total,
-            "theta_sa_required": need, "t_junction": tj, "thd_n": lm4651.thd_n(f_sw),
-            "p_clip": lm4651.p_clip(f_sw, s["r_load"], s["supply"]),
-            "ok_thd": lm4651.thd_n(f_sw) <= s["thd_max"] * (1 + rtol),
-            "ok_clip": lm4651.p_clip(f_sw, s["r_load"], s["supply"]) >= s["p_out"] * (1 - rtol),
-            "ok_heat": need > 0 and (sink is None or sink <= need * (1 + rtol))}
+def r_dly_for(s: dict) -> float:
+    """Closed form: the smallest series R_DLY whose dead time 27 ns + 1.7 pF R_DLY meets dead_time_min (0 if
+    the 27 ns at R_DLY = 0 already does: pin 17 to ground)."""
+    need = (s["dead_time_min"] - lm4651.T_DEAD_0) / lm4651.C_DEAD
+    if need <= 0:
+        return 0.0
+    if need > R_DLY_RANGE[1]:
+        raise Infeasible(TABLE, f"a dead time of {s['dead_time_min'] * 1e9:.0f} ns needs R_DLY = {need:.0f} ohm, "
+                         f"above {R_DLY_RANGE[1]:g} ohm", {"dead_time_max": float(lm4651.dead_time_total(1e6))})
+    return series.at_least(s["r_dly_series"], need * (1 - 1e-12))
 
 
-def band(s: dict) -> dict:
-    """The feasible switching-frequency band in closed form: every constraint is monotonic in f.
+def _params(s: dict) -> list[float]:
+    """The spec as the NLP's parameter vector (in the order of NAMES)."""
+    p = {"p_out": s["p_out"], "r_load": s["r_load"], "supply": s["supply"], "t_a": s["t_ambient"],
+         "path": s["theta_cs"] + DEV["theta_jc"][s["package"]], "sink": s["theta_sa_available"] or 0.0,
+         "thd_max": s["thd_max"], "p_test": s["thd_test_power"], "w_cont": float(s["p_continuous"] is not None),
+         "p_cont": s["p_continuous"] or 0.0, "tol_slow": s["osc_tol_slow"], "tol_fast": s["osc_tol_fast"],
+         "tol_l": s["l_tolerance"], "tol_c": s["c_tolerance"], "f_audio": s["f_audio"],
+         "g_band": 10 ** (s["droop_max"] / 10), "q_max": s["q_max"], "ripple_max": s["ripple_max"],
+         "i_max": min(s["i_sat"], lm4651.I_LIMIT), "dcr": s["l_dcr"], "t_target": DEV["tj_max"] - s["tj_margin"],
+         "rds25": s["rds_on_25"], "t_om": s["t_overmod"]}
+    return [p[n] for n in NAMES]
 
-    THD+N falls with f (a lower bound f_thd), the clipping power falls with f (an upper bound
-    f_clip), and the LM4652's dissipation rises with f (with a given heat sink, an upper bound f_heat).
+
+def _theta_needed(f, P):
+    """theta_SA needed at oscillator frequency f (symbolic twin of class_d_model.heat)."""
+    pc = P["w_cont"] * P["p_cont"] + (1 - P["w_cont"]) * lm4651.p_clip(f, P["r_load"], P["supply"])
+    watts = (lm4651.p_switch(f, pc, t_overmod=P["t_om"]) + lm4651.p_idle_4652(P["supply"])
+             + 2 * pc / P["r_load"] * P["rds25"] * (1 + lm4651.RDS_TC * (P["t_target"] - 25.0)))
+    return (P["t_target"] - P["t_a"]) / watts - P["path"]
+
+
+def _constraints(f, l_out, c_out, P) -> list[tuple[str, object, float, float]]:
+    """Every constraint at every corner, scaled to order one (the symbolic twin of class_d_model.figures)."""
+    out = [("oscillator range", f * (1 - P["tol_slow"]) / DEV["f_min"], 1.0, ca.inf),
+           ("oscillator range", f * (1 + P["tol_fast"]) / DEV["f_max"], -ca.inf, 1.0)]
+    rl, vs = P["r_load"], P["supply"]
+    for so, sl, sc in model.CORNERS:
+        fc = f * (1 - P["tol_slow"] if so < 0 else 1 + P["tol_fast"])
+        lc, cc = l_out * (1 + sl * P["tol_l"]), c_out * (1 + sc * P["tol_c"])
+        out += [("THD+N", lm4651.thd_n_joint(fc, lc, cc, P["p_test"], rl, vs) / P["thd_max"], -ca.inf, 1.0),
+                ("ripple", lm4651.ripple_rms(fc, lc, cc, rl, vs) / P["ripple_max"], -ca.inf, 1.0),
+                ("audio band", lm4651.filter_gain2(P["f_audio"], lc, cc, rl) / P["g_band"], -ca.inf, 1.0),
+                ("audio band", lm4651.filter_gain2(P["f_audio"], lc, cc, rl) * P["g_band"], 1.0, ca.inf),
+                ("filter Q", lm4651.filter_q(lc, cc, rl) / P["q_max"], -ca.inf, 1.0),
+                ("inductor peak", lm4651.inductor_peak(fc, lc, cc, lm4651.v_clip_peak(fc, rl, vs), rl, vs,
+                                                       P["f_audio"]) / P["i_max"], -ca.inf, 1.0)]
+    fast = f * (1 + P["tol_fast"])
+    out.append(("clipping", lm4651.p_clip(fast, rl, vs) / P["p_out"], 1.0, ca.inf))
+    return out
+
+
+NAMES = ("p_out", "r_load", "supply", "t_a", "path", "sink", "thd_max", "p_test", "w_cont", "p_cont", "tol_slow",
+         "tol_fast", "tol_l", "tol_c", "f_audio", "g_band", "q_max", "ripple_max", "i_max", "dcr", "t_target",
+         "rds25", "t_om")
+
+
+@functools.lru_cache(maxsize=4)
+def _nlp(objective: str):
+    """The NLP, built once per objective with the spec as parameters (x: f, L, C scaled; t: theta_SA)."""
+    x = ca.SX.sym("x", 4)
+    p = ca.SX.sym("p", len(NAMES))
+    P = {n: p[i] for i, n in enumerate(NAMES)}
+    f, l_out, c_out, t = x[0] * F_S, x[1] * L_S, x[2] * C_S, x[3]
+    cons = _constraints(f, l_out, c_out, P)
+    for so in (-1, 1):
+        fc = f * (1 - P["tol_slow"] if so < 0 else 1 + P["tol_fast"])
+        theta = _theta_needed(fc, P)
+        cons += [("heat sink", theta - P["sink"], 0.0, ca.inf), ("heat sink objective", theta - t, 0.0, ca.inf)]
+    loss = (lm4651.p_switch(f, P["p_out"]) + lm4651.coil_loss(P["p_out"], P["r_load"], l_out, P["dcr"])) / P["p_out"]
+    obj = loss if objective == "efficiency" else -t + 1e-3 * loss
+    g = ca.vertcat(*[c[1] for c in cons])
+    solver = ca.nlpsol(f"class_d_{objective}", "ipopt", {"x": x, "p": p, "f": obj, "g": g}, IPOPT_OPTIONS)
+    return solver, [c[0] for c in cons], [c[2] for c in cons], [c[3] for c in cons]
+
+
+def solve(s: dict) -> Solution:
+    """IPOPT on the continuous problem: (f_sw, L, C) as reals, every constraint at every corner."""
+    solver, names, lbg, ubg = _nlp(s["objective"])
+    f_lo = DEV["f_min"] / (1 - s["osc_tol_slow"])
+    f_hi = DEV["f_max"] / (1 + s["osc_tol_fast"])
+    x0 = [math.sqrt(f_lo * max(f_hi, f_lo)) / F_S, 50e-6 / L_S, 5e-6 / C_S, 0.0]
+    lbx = [DEV["f_min"] / F_S, L_RANGE[0] / L_S, C_RANGE[0] / C_S, -100.0]
+    ubx = [DEV["f_max"] / F_S, L_RANGE[1] / L_S, C_RANGE[1] / C_S, 100.0]
+    r = solver(x0=x0, p=_params(s), lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg)
+    x = np.array(r["x"]).ravel()
+    lam = np.array(r["lam_g"]).ravel()
+    return Solution(x * [F_S, L_S, C_S, 1.0], lam, names, bool(solver.stats()["success"]))
+
+
+def snap(s: dict, x: np.ndarray, r_dly: float):
+    """The best series (R_OSC, L, C_BYP), exactly, from IPOPT's (f, L, C).
+
+    First the best within a factor SPREAD of IPOPT's optimum (the incumbent); then every (R_OSC, L) pair
+    whose objective is at least the incumbent's (both objectives are set by R_OSC and L alone) with every
+    C_BYP: nothing outside that set can beat the incumbent, so the best inside it is the optimum. IPOPT only
+    makes the set small. Returns (parts or None, their figures, the figures of the last set searched).
     """
-    f_lo, f_hi = lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"]
-    f_thd = lm4651.F_REF * (lm4651.THD_REF / s["thd_max"]) ** (1 / lm4651.THD_EXPONENT)
-    # p_clip(f) = p_out  <=>  1 - A f = sqrt(2 R_L p_out) (R_L + R_S) / (R_L V_EFF supply/20)
-    g = math.sqrt(2 * s["r_load"] * s["p_out"]) * (s["r_load"] + lm4651.R_S) / (
-        s["r_load"] * lm4651.V_EFF * s["supply"] / lm4651.SUPPLY_REF)
-    f_clip = (1 - g) / lm4651.A_OM
-    f_heat = math.inf
-    if s["theta_sa_available"] is not None:
-        theta = lm4651.DEVICE["theta_jc"][s["package"]] + s["theta_cs"] + s["theta_sa_available"]
-        p_allow = (lm4651.DEVICE["tj_max"] - s["t_ambient"]) / theta
-        y = (p_allow - lm4651.p_conduction(s["p_out"], s["r_load"])) / s["p_out"]
-        tau = lm4651.DEVICE["t_rise"] + lm4651.DEVICE["t_fall"] + lm4651.DEVICE["t_overmod"]
-        f_heat = (y / (1 + y)) / tau if y > 0 else -math.inf
-    return {"f_thd": f_thd, "f_clip": f_clip, "f_heat": f_heat,
-            "lower": max(f_lo, f_thd), "upper": min(f_hi, f_clip, f_heat)}
-
-
-def _infeasible(s: dict, band: dict):
-    """Raise the Infeasible that names what can be met, from the closed-form band."""
-    lo, f_lo, f_hi = band["lower"], lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"]
-    if band["f_clip"] < f_lo:
-        p_max = lm4651.p_clip(f_lo, s["r_load"], s["supply"])
-        raise Infeasible(TABLE, f"{s['p_out']:g} W clips into {s['r_load']:g} ohm at +-{s['supply']:g} V even at "
-                         f"{f_lo / 1e3:g} kHz: at most {p_max:.0f} W", {"p_out_max": p_max})
-    if band["f_thd"] > f_hi:
-        raise Infeasible(TABLE, f"THD+N {s['thd_max']:.3%} needs f_sw >= {band['f_thd'] / 1e3:.0f} kHz, above the "
-                         f"{f_hi / 1e3:g} kHz limit; at {f_hi / 1e3:g} kHz the model gives {lm4651.thd_n(f_hi):.3%}",
-                         {"thd_min": lm4651.thd_n(f_hi)})
-    if band["f_thd"] > band["f_clip"]:
-        raise Infeasible(
-            TABLE,
-            f"THD+N {s['thd_max']:.3%} needs f_sw >= {band['f_thd'] / 1e3:.1f} kHz but {s['p_out']:g} W without "
-            f"clipping needs f_sw <= {band['f_clip'] / 1e3:.1f} kHz: at {band['f_thd'] / 1e3:.1f} kHz at most "
-            f"{lm4651.p_clip(lo, s['r_load'], s['supply']):.1f} W, or at {band['f_clip'] / 1e3:.1f} kHz THD+N "
-            f"{lm4651.thd_n(band['f_clip']):.3%}",
-            {"p_out_max": lm4651.p_clip(lo, s["r_load"], s["supply"]), "thd_min": lm4651.thd_n(band["f_clip"])})
-    ev = evaluate(lo, {**s, "theta_sa_available": None})
-    theta = lm4651.DEVICE["theta_jc"][s["package"]] + s["theta_cs"] + s["theta_sa_available"]
-    t_a_max = lm4651.DEVICE["tj_max"] - ev["p_dissipation"] * theta
-    raise Infeasible(
-        TABLE,
-        f"with a {s['theta_sa_available']:g} K/W heat sink the LM4652 overheats at every allowed frequency: at "
-        f"{lo / 1e3:.1f} kHz it dissipates {ev['p_dissipation']:.1f} W and needs a heat sink of "
-        f"{ev['theta_sa_required']:.2f} K/W or better, or an ambient of at most {t_a_max:.0f} C",
-        {"theta_sa_required": ev["theta_sa_required"], "t_ambient_max": t_a_max, "f_sw": lo})
-
-
-def solve(s: dict, fband: dict):
-    """IPOPT on the continuous problem: f in kHz, the LM4652's dissipation minimised."""
-    x = ca.SX.sym("f_kHz")
-    f = x * 1e3
-    p4652 = lm4651.p_switch(f, s["p_out"]) + lm4651.p_conduction(s["p_out"], s["r_load"])
-    cons = [("thd", lm4651.thd_n(f) / s["thd_max"], -ca.inf, 1.0),
-            ("clipping", lm4651.p_clip(f, s["r_load"], s["supply"]) / s["p_out"], 1.0, ca.inf)]
-    if s["theta_sa_available"] is not None:
-        cons.append(("heat_sink", lm4651.t_junction(p4652, s["t_ambient"], s["theta_sa_available"], s["package"],
-                                                    s["theta_cs"]) / lm4651.DEVICE["tj_max"], -ca.inf, 1.0))
-    f_lo, f_hi = lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"]
-    return minimise(p4652, x, cons, x0=[0.5 * (fband["lower"] + fband["upper"]) / 1e3], lbx=[f_lo / 1e3],
-                    ubx=[f_hi / 1e3])
-
-
-def snap(s: dict, f_star: float, fband: dict):
-    """R_OSC: the series value whose real frequency lies in the band with the best efficiency (the lowest
-    frequency); the neighbours of the ideal resistor are tried first, then the whole series."""
-    f_lo, f_hi = lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"]
-    ideal = lm4651.r_osc_for(f_star, s["r_dly"])
-    near = [series.at_most(s["r_osc_series"], ideal), series.at_least(s["r_osc_series"], ideal)]
-    rows = []
-    for pool in (near, series.values(s["r_osc_series"], 10.0, 1e6)):
-        for r in pool:
-            f_real = lm4651.f_sw_for(r, s["r_dly"])
-            if f_lo <= f_real <= f_hi:
-                ev = evaluate(f_real, s)
-                if ev["ok_thd"] and ev["ok_clip"] and ev["ok_heat"]:
-                    rows.append((ev["efficiency"], r, ev))
-        if rows:
-            break
-    if not rows:
-        raise Infeasible(
-            TABLE, f"the feasible band {fband['lower'] / 1e3:.2f} to {fband['upper'] / 1e3:.2f} kHz holds no "
-            f"{s['r_osc_series']} R_OSC (ideal {ideal:.0f} ohm gives {f_star / 1e3:.2f} kHz): use a finer series or "
-            f"relax THD+N", {"f_sw": f_star, "r_osc_ideal": ideal, "band": (fband["lower"], fband["upper"])})
-    _, r_osc, ev = max(rows, key=lambda t: t[0])
-    return r_osc, ev
-
-
-BINDING = {"thd": "THD+N limit at the test point", "clipping": "clipping power at 1 % THD",
-           "heat_sink": "junction temperature with the given heat sink"}
-
-
-def design(spec: dict | None = None) -> ClassDResult:
-    """Highest efficiency at p_out subject to THD+N, clipping power and the heat sink."""
-    s = checked(spec)
-    fband = band(s)
-    if fband["lower"] > fband["upper"] * (1 + 1e-9):
-        _infeasible(s, fband)
-    sol = solve(s, fband)
-    f_star = float(sol.x[0]) * 1e3
-    r_osc, ev = snap(s, f_star, fband)
-    binding = [BINDING[b] for b in sol.binding(1e-8)]
-    return ClassDResult(
-        spec=s, f_sw=ev["f_sw"], r_osc=r_osc, efficiency=ev["efficiency"], p_dissipation=ev["p_dissipation"],
-        p_total=ev["p_total"], theta_sa_required=ev["theta_sa_required"], t_junction=ev["t_junction"],
-        thd_n=ev["thd_n"], p_clip=ev["p_clip"],
-        binding=binding[0] if binding else "none (efficiency is best at the lowest frequency allowed)",
-        f_continuous=f_star, band=(fband["lower"], fband["upper"]))
+    wins = [(v / SPREAD, v * SPREAD) for v in x[:3]]
+    r, l_out, c_out = grid(s, r_dly, *wins)
+    i, fig = best(s, r, l_out, c_out, r_dly) if r.size else (None, None)
+    rs, ls, cs = model.axes(s, r_dly)
+    R, L = (a.ravel() for a in np.meshgrid(rs, ls, indexing="ij"))
+    first, _ = model.pair_keys(s, R, L, r_dly)
+    if i is not None:
+        incumbent = model.pair_keys(s, r[i], l_out[i], r_dly)[0]
+        keep = first >= incumbent - 1e-12 * abs(incumbent)
+        R, L = R[keep], L[keep]
+    r, c_out = (a.ravel() for a in np.meshgrid(R, cs, indexing="ij"))
+    l_out = np.repeat(L, len(cs))
+    i, fig = best(s, r, l_out, c_out, r_dly) if r.size else (None, None)
+    if i is None:
+        return None, None, (r, l_out, c_out, fig)
+    return (r[i], l_out[i], c_out[i]), model.at(fig, i), (r, l_out, c_out, fig)
 
 
 def enumerate_series(s: dict):
-    """Exhaustive: the series R_OSC whose real frequency re-verifies with the best efficiency, or None."""
+    """Exhaustive: the best (R_OSC, L, C_BYP, R_DLY) over the whole grid, or None (the chapter's check)."""
     s = checked(s)
-    best = None
-    for r in series.values(s["r_osc_series"], 10.0, 1e6):
-        f = lm4651.f_sw_for(r, s["r_dly"])
-        if lm4651.DEVICE["f_min"] <= f <= lm4651.DEVICE["f_max"]:
-            ev = evaluate(f, s)
-            if ev["ok_thd"] and ev["ok_clip"] and ev["ok_heat"] and (best is None or ev["efficiency"] > best[0]):
-                best = (ev["efficiency"], r)
-    return None if best is None else best[1]
+    r_dly = r_dly_for(s)
+    r, l_out, c_out = grid(s, r_dly)
+    i, _ = best(s, r, l_out, c_out, r_dly) if r.size else (None, None)
+    return None if i is None else (float(r[i]), float(l_out[i]), float(c_out[i]), r_dly)
+
+
+def design(spec: dict | None = None) -> ClassDResult:
+    """The joint design: IPOPT for (f_sw, L, C), snapped to the series and re-verified at every corner."""
+    s = checked(spec)
+    r_dly = r_dly_for(s)
+    sol = solve(s)
+    parts, fig, searched = snap(s, sol.x, r_dly)
+    if parts is None:
+        infeasible(s, r_dly, searched)  # with no incumbent the set searched was the whole grid
+    r_osc, l_out, c_out = (float(v) for v in parts)
+    return ClassDResult(
+        spec=s, f_sw=fig["f_sw"], f_sw_min=fig["f_sw_min"], f_sw_max=fig["f_sw_max"], r_osc=r_osc, r_dly=r_dly,
+        l_out=l_out, c_out=c_out, efficiency=fig["efficiency"], p_dissipation=fig["p_dissipation"],
+        theta_sa_required=fig["theta_sa_required"], t_junction=fig["t_junction"], thd_n=fig["thd_n"],
+        p_clip=fig["p_clip"], binding=binding_text(sol, fig), warnings=warnings(s, fig, l_out, c_out),
+        figures=fig, continuous=(float(sol.x[0]), float(sol.x[1]), float(sol.x[2])),
+        band=(fig["f_sw_min"], fig["f_sw_max"]))

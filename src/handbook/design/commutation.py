@@ -1,25 +1,34 @@
-"""CAP-CD (and CAP-DC) for the TDA5143/TDA5144's adaptive commutation delay.
+"""The TDA5143/TDA5144 timing set: CAP-CD (= CAP-DC), and from motor data CAP-ST and CAP-TI.
 
-Problem: the smallest series capacitor whose worst-case swing at ``rpm_min`` (largest current, smallest
-capacitor) fits the window, and whose worst-case swing at ``rpm_max`` (smallest current, largest
-capacitor) stays above the noise floor. solve (IPOPT on the continuous relaxation) -> snap (series) ->
-verify (both swings at the chosen value) -> :class:`CommutationResult`.
+CAP-CD is charged at I_ch for one commutation interval t_com (eq 4) and must swing by I_ch t_com / C:
+within the window between the low and high switching levels at ``rpm_min``, above the noise floor at
+``rpm_max``. The swing rises with I_ch and falls with C; the window rises with the high level and falls
+with the low level (signs proven symbolically in the design chapter). So the worst case is a corner of
+the tolerance box, and the smallest capacitor meeting the window has the exact closed form
+
+    C >= I_ch,max t_com(rpm_min) / ((1 - tol) (V_high,min - V_low,max))
+
+snapped to the series and re-checked at all 16 corners (:func:`verify`). The choice is one-dimensional
+and monotonic: no optimiser is needed and none is used. The smallest C also gives the largest swing at
+``rpm_max``, so it maximises the noise margin. CAP-ST and CAP-TI: :mod:`.commutation_timers`; the
+device sanity warnings: :mod:`.commutation_checks`.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-
-import casadi as ca
 
 from ..core import InputError, series
 from ..sources.an94002 import circuit as an94002
+from . import commutation_checks as checks
+from . import commutation_timers as timers
 from .common import Result, completed, ordered
-from .solvers import Infeasible, minimise
+from .solvers import Infeasible
 
 TABLE = "commutation"
 
 BINDING = {
-    "window": "swing at rpm_min fits the window (largest current, smallest capacitor)",
+    "window": "swing at rpm_min fits the window (largest current, smallest capacitor, narrowest window)",
     "noise": "swing at rpm_max stays above the noise floor (smallest current, largest capacitor)",
 }
 
@@ -31,12 +40,18 @@ class CommutationResult(Result):
     rpm_min_reliable: float
     rpm_max_reliable: float
     binding: str
-    continuous_optimum: float
+    continuous_optimum: float  # the closed-form bound (F)
     noise_margin: float
     swing_at_rpm_min: float
     swing_at_rpm_max: float
+    window_corner: dict  # the corner at which the window binds
     next_smaller: float
     next_smaller_fails: str
+    cap_st: float | None
+    cap_ti: float | None
+    start: timers.StartResult | None
+    watchdog: timers.WatchdogResult | None
+    warnings: tuple
 
     table = TABLE
 
@@ -44,82 +59,105 @@ class CommutationResult(Result):
 def checked(spec: dict | None) -> dict:
     s = completed(TABLE, spec)
     ordered(TABLE, "rpm_min", "rpm_max", s, "rpm")
-    ordered(TABLE, "i_charge_min", "i_charge_max", s, "A", strict=False)
-    if s["min_excursion"] >= s["window"]:
-        raise InputError(f"commutation.min_excursion = {s['min_excursion']:g} V must be below "
-                         f"commutation.window = {s['window']:g} V")
+    for low, high, unit in (("i_charge_min", "i_charge_max", "A"), ("v_low_min", "v_low_max", "V"),
+                            ("v_high_min", "v_high_max", "V"), ("i_st_min", "i_st_max", "A"),
+                            ("i_wd_min", "i_wd_max", "A")):
+        ordered(TABLE, low, high, s, unit, strict=False)
+    ordered(TABLE, "v_low_max", "v_high_min", s, "V")
+    ordered(TABLE, "v_st_low", "v_st_high", s, "V")
+    window = s["v_high_min"] - s["v_low_max"]
+    if s["min_excursion"] >= window:
+        raise InputError(f"commutation.min_excursion = {s['min_excursion']:g} V must be below the narrowest window "
+                         f"v_high_min - v_low_max = {window:g} V")
+    if s["rpm_reverse"] is not None and s["flyback_time"] is None:
+        raise InputError(f"commutation.rpm_reverse = {s['rpm_reverse']:g} rpm bounds CAP-TI from above; give "
+                         "commutation.flyback_time too (its lower bound), or leave rpm_reverse out")
+    timers.motor_given(s)
     return s
 
 
+def box(c: float, s: dict, levels: bool = True) -> dict:
+    """The tolerance box of one capacitor value: capacitance, charge current (and the two levels)."""
+    out = {"cap": timers.spread(c, s["tolerance"]), "i": (s["i_charge_min"], s["i_charge_max"])}
+    if levels:
+        out.update(v_low=(s["v_low_min"], s["v_low_max"]), v_high=(s["v_high_min"], s["v_high_max"]))
+    return out
+
+
 def bounds(s: dict) -> tuple[float, float]:
-    """(smallest C meeting the window at rpm_min, largest C meeting the noise floor at rpm_max), in F."""
+    """(smallest C meeting the window at rpm_min, largest C meeting the noise floor at rpm_max), in F:
+    the closed forms at the corners the monotonicity picks."""
     n, tol = s["pole_pairs"], s["tolerance"]
-    c_low = s["i_charge_max"] * an94002.t_com(s["rpm_min"], n) / (s["window"] * (1 - tol))
+    window = s["v_high_min"] - s["v_low_max"]
+    c_low = s["i_charge_max"] * an94002.t_com(s["rpm_min"], n) / (window * (1 - tol))
     c_high = s["i_charge_min"] * an94002.t_com(s["rpm_max"], n) / (s["min_excursion"] * (1 + tol))
     return c_low, c_high
 
 
 def verify(c: float, s: dict) -> dict:
-    """Independent check of one capacitor value: both worst-case swings and the speeds it supports."""
-    n, tol = s["pole_pairs"], s["tolerance"]
-    swing_slow = an94002.excursion(c * (1 - tol), s["rpm_min"], n, s["i_charge_max"])
-    swing_fast = an94002.excursion(c * (1 + tol), s["rpm_max"], n, s["i_charge_min"])
-    lo, hi = an94002.reliable_speed_range(c, tol, n, s["i_charge_min"], s["i_charge_max"], s["window"],
-                                          s["min_excursion"])
+    """One capacitor value at every corner (16 for the window, 4 for the noise floor): worst swings and
+    the speeds it covers."""
+    n, floor = s["pole_pairs"], s["min_excursion"]
+    t_slow, t_fast = an94002.t_com(s["rpm_min"], n), an94002.t_com(s["rpm_max"], n)
+    excess, corner = timers.worst(lambda cap, i, v_low, v_high: i * t_slow / cap - (v_high - v_low), box(c, s),
+                                  largest=True)
+    swing_fast, _ = timers.worst(lambda cap, i: i * t_fast / cap, box(c, s, False), largest=False)
+    lo, _ = timers.worst(lambda cap, i, v_low, v_high: 10 * i / (n * cap * (v_high - v_low)), box(c, s), largest=True)
+    hi, _ = timers.worst(lambda cap, i: 10 * i / (n * cap * floor), box(c, s, False), largest=False)
+    swing_slow = excess + corner["v_high"] - corner["v_low"]
     return {
-        "swing_at_rpm_min": swing_slow, "swing_at_rpm_max": swing_fast,
-        "window_ok": swing_slow <= s["window"] * (1 + 1e-12),
-        "noise_ok": swing_fast >= s["min_excursion"] * (1 - 1e-12),
+        "swing_at_rpm_min": swing_slow, "window_at_corner": corner["v_high"] - corner["v_low"],
+        "window_corner": corner, "swing_at_rpm_max": swing_fast,
+        "window_ok": excess <= 1e-12 * swing_slow, "noise_ok": swing_fast >= floor * (1 - 1e-12),
         "rpm_min_reliable": lo, "rpm_max_reliable": hi,
     }
 
 
-def solve(s: dict):
-    """The continuous relaxation (C in nF): minimise C subject to both swing constraints."""
-    n, tol = s["pole_pairs"], s["tolerance"]
-    t_slow, t_fast = an94002.t_com(s["rpm_min"], n), an94002.t_com(s["rpm_max"], n)
-    c_low, _ = bounds(s)
-    x = ca.SX.sym("c_nF")
-    c = x * 1e-9
-    return minimise(x, x, [
-        ("window", s["i_charge_max"] * t_slow / (c * (1 - tol)) / s["window"], -ca.inf, 1.0),
-        ("noise", s["i_charge_min"] * t_fast / (c * (1 + tol)) / s["min_excursion"], 1.0, ca.inf),
-    ], x0=[max(c_low, 1e-12) * 1e9 * 1.5], lbx=[1e-3], ubx=[1e9])
+def infeasible(s: dict, chosen: float, check: dict) -> Infeasible:
+    c_probe = 1e-9  # the achievable speed ratio does not depend on the capacitor
+    probe = verify(c_probe, s)
+    return Infeasible(
+        TABLE,
+        f"no {s['series']} capacitor covers {s['rpm_min']:g} to {s['rpm_max']:g} rpm: the smallest that fits "
+        f"the window at {s['rpm_min']:g} rpm ({chosen * 1e9:.3g} nF) keeps a swing above "
+        f"{s['min_excursion']:g} V only up to {check['rpm_max_reliable']:.0f} rpm",
+        {"cap_cd": chosen, "rpm_min": s["rpm_min"], "rpm_max_reliable": check["rpm_max_reliable"],
+         "rpm_ratio_possible": probe["rpm_max_reliable"] / probe["rpm_min_reliable"]})
 
 
-def design(spec: dict | None = None) -> CommutationResult:
-    """Smallest series CAP-CD whose swing fits the window at rpm_min; verified against the noise floor.
-
-    The smallest C maximises the margin of the noise constraint. CAP-DC takes the same value.
-    """
-    s = checked(spec)
-    n, tol = s["pole_pairs"], s["tolerance"]
+def design_cap_cd(s: dict) -> dict:
+    """CAP-CD: closed-form bound -> smallest series value at or above it -> every corner re-checked."""
     c_low, c_high = bounds(s)
-    sol = solve(s)
     chosen = series.at_least(s["series"], c_low * (1 - 1e-12))
     check = verify(chosen, s)
     if not (c_low <= c_high * (1 + 1e-9) and check["window_ok"] and check["noise_ok"]):
-        raise Infeasible(
-            TABLE,
-            f"no {s['series']} capacitor covers {s['rpm_min']:g} to {s['rpm_max']:g} rpm: the smallest that fits "
-            f"the window at {s['rpm_min']:g} rpm ({chosen * 1e9:.3g} nF) keeps a swing above "
-            f"{s['min_excursion']:g} V only up to {check['rpm_max_reliable']:.0f} rpm",
-            {"cap_cd": chosen, "rpm_min": s["rpm_min"], "rpm_max_reliable": check["rpm_max_reliable"],
-             "rpm_ratio_possible": an94002.rpm_ratio(s["window"], s["min_excursion"], s["i_charge_min"],
-                                                     s["i_charge_max"]) * (1 - tol) / (1 + tol)})
+        raise infeasible(s, chosen, check)
     below = series.at_most(s["series"], chosen * (1 - 1e-9))
-    binding = sol.binding()
-    swing_below = an94002.excursion(below * (1 - tol), s["rpm_min"], n, s["i_charge_max"])
+    fail = verify(below, s)
+    corner = fail["window_corner"]
+    why = (f"{below * 1e9:.3g} nF at {corner['cap'] * 1e9:.4g} nF with {corner['i'] * 1e6:.3g} uA swings "
+           f"{fail['swing_at_rpm_min']:.3g} V at {s['rpm_min']:g} rpm, more than the "
+           f"{corner['v_high']:g} V - {corner['v_low']:g} V window")
+    return {"cap_cd": chosen, "bound": c_low, "check": check, "below": below, "why": why}
+
+
+def design(spec: dict | None = None) -> CommutationResult:
+    """The timing set: CAP-CD = CAP-DC always; CAP-ST with J, K_t and start_current; CAP-TI with
+    flyback_time. Each closed form, snapped, re-checked at every corner; device warnings attached."""
+    s = checked(spec)
+    cd = design_cap_cd(s)
+    check = cd["check"]
+    start, watchdog = timers.design_start(s), timers.design_watchdog(s)
+    noise_margin = check["swing_at_rpm_max"] / s["min_excursion"] - 1
     return CommutationResult(
-        spec=s, cap_cd=chosen, cap_dc=chosen,
+        spec=s, cap_cd=cd["cap_cd"], cap_dc=cd["cap_cd"],
         rpm_min_reliable=check["rpm_min_reliable"], rpm_max_reliable=check["rpm_max_reliable"],
-        binding=BINDING["window"] if binding[:1] == ["window"] or not sol.success else BINDING[binding[0]],
-        continuous_optimum=float(sol.x[0]) * 1e-9,
-        noise_margin=check["swing_at_rpm_max"] / s["min_excursion"] - 1,
+        binding=BINDING["window"], continuous_optimum=cd["bound"], noise_margin=noise_margin,
         swing_at_rpm_min=check["swing_at_rpm_min"], swing_at_rpm_max=check["swing_at_rpm_max"],
-        next_smaller=below,
-        next_smaller_fails=(f"{below * 1e9:.3g} nF x (1 - {tol:g}) = {below * (1 - tol) * 1e9:.3g} nF swings "
-                            f"{swing_below:.3g} V at {s['rpm_min']:g} rpm, more than the {s['window']:g} V window"),
+        window_corner=check["window_corner"], next_smaller=cd["below"], next_smaller_fails=cd["why"],
+        cap_st=None if start is None else start.cap_st, cap_ti=None if watchdog is None else watchdog.cap_ti,
+        start=start, watchdog=watchdog,
+        warnings=tuple(checks.warnings(s, cd["cap_cd"], start, watchdog)),
     )
 
 
@@ -131,3 +169,32 @@ def enumerate_series(spec: dict) -> float | None:
         if chk["window_ok"]:
             return v if chk["noise_ok"] else None
     return None
+
+
+def sensitivity(s: dict) -> list[dict]:
+    """Which tolerance eats most of the speed range: each group pinned to the middle of its range in turn.
+
+    For a capacitor at its bound the worst-case speed range rpm_max_reliable / rpm_min_reliable is
+    (window_min / floor) (I_min / I_max) (1 - tol) / (1 + tol); a group's share is the part of the log of
+    that loss (against every group pinned) that pinning it recovers.
+    """
+    mid = lambda lo, hi: (lo + hi) / 2  # noqa: E731
+    groups = {"capacitor tolerance": {"tolerance": 0.0},
+              "charge current": dict.fromkeys(("i_charge_min", "i_charge_max"), mid(s["i_charge_min"],
+                                                                                     s["i_charge_max"])),
+              "low level": dict.fromkeys(("v_low_min", "v_low_max"), mid(s["v_low_min"], s["v_low_max"])),
+              "high level": dict.fromkeys(("v_high_min", "v_high_max"), mid(s["v_high_min"], s["v_high_max"]))}
+
+    def ratio(pinned: dict) -> float:
+        chk = verify(1e-9, {**s, **pinned})
+        return chk["rpm_max_reliable"] / chk["rpm_min_reliable"]
+
+    base = ratio({})
+    ideal = ratio({k: v for g in groups.values() for k, v in g.items()})
+    total = math.log(ideal / base)
+    rows = []
+    for name, pinned in groups.items():
+        gain = ratio(pinned) / base
+        rows.append({"group": name, "range_gain": gain, "share": math.log(gain) / total,
+                     "cap_cd_bound": bounds({**s, **pinned})[0]})
+    return rows

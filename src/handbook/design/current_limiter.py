@@ -240,6 +240,36 @@ def warnings(r: dict, s: dict) -> list[str]:
     return out
 
 
+#: what spreads the trip current, and the spec keys that set each (zeroed one at a time by sensitivity)
+SPREAD_SOURCES = {"R9..R13 tolerance": ("resistor_tolerance",), "R7 tolerance": ("r7_tolerance",),
+                  "zener tolerance": ("zener_tolerance",), "zener drift": ("zener_tc",), "op-amp offset": ("offset",),
+                  "op-amp bias current": ("input_bias",)}
+
+
+def sensitivity(r7: float, network, s: dict) -> list[tuple[str, float, float]]:
+    """Which tolerance eats the window: for each source, (name, share of ln(i_trip_max / i_trip_min), the
+    worst margin with that source removed). The shares are of the log spread at every corner, each
+    source removed alone; they need not add to one (the sources interact), so they are normalised."""
+    base = net.verify(r7, network, s)
+    spread = math.log(float(base["i_trip_max"] / base["i_trip_min"]))
+    rows = []
+    for name, keys in SPREAD_SOURCES.items():
+        v = net.verify(r7, network, {**s, **{k: 0.0 for k in keys}})
+        rows.append((name, spread - math.log(float(v["i_trip_max"] / v["i_trip_min"])),
+                     float(min(v["margin_low"], v["margin_high"]))))
+    total = sum(r[1] for r in rows) or 1.0
+    return [(name, gain / total, margin) for name, gain, margin in rows]
+
+
+def judge(r7: float, network, s: dict) -> dict:
+    """Any limiter (the note's, say) by the same exact checks as a design: trip currents, margins, headroom."""
+    v = net.verify(r7, network, s)
+    out = {k: float(v[k]) for k in ("i_trip_min", "i_trip_max", "margin_low", "margin_high", "headroom_min")}
+    out["meets"] = bool(min(out["margin_low"], out["margin_high"]) >= s["min_margin"] - 1e-12
+                        and out["headroom_min"] >= s["input_headroom"] - 1e-12)
+    return out
+
+
 def enumerate_series(spec: dict):
     """Exhaustive search (every network and every R7; for reduced series only): (r7, network, worst margin)
     or None. Used by the benchmark beside :func:`design`."""

@@ -24,8 +24,6 @@ from __future__ import annotations
 
 import itertools
 
-import sympy as sp
-
 #: the divider resistors, in the order of every tuple here
 DIVIDER = ("r9", "r10", "r11", "r12", "r13")
 CORNERS = tuple(itertools.product((-1, 1), repeat=5))
@@ -109,6 +107,8 @@ def corner_proof() -> dict:
     positive terms)} for V_cs, the trip current and both headrooms. All degrees at most 1 and positive
     denominators: each is monotone in each quantity over
     the tolerance box, so the extremes lie at its vertices (the module's docstring)."""
+    import sympy as sp
+
     r7, r9, r10, r11, r12, r13 = sp.symbols("R7 R9 R10 R11 R12 R13", positive=True)
     vd1, vcs, vos, ip, im, z = sp.symbols("V_D1 V_cs V_os I_p I_m Z", real=True)
     v_plus = z + (vd1 - vcs) * r13 / (r12 + r13) + ip * r12 * r13 / (r12 + r13)

@@ -2,11 +2,20 @@
 
 Chapters use ``from handbook import report`` and call ``report.setup()``, ``report.table(...)``,
 ``report.examples_table(...)``, ``report.axes(...)``, ``report.eng(...)`` and so on; the design
-figures are in :mod:`handbook.report.design_plots`.
+figures are in :mod:`handbook.report.design_plots`. The names load on first use, so the command line's
+text output (which needs only :mod:`.tables`) does not import pyplot.
 """
-from .figures import axes, format_axis
-from .notebook import glue_all, setup, show_equation
-from .tables import BADGE, ERRATA_KINDS, design_table, eng, errata_counts, errata_md, examples_table, table
+from importlib import import_module
 
-__all__ = ["BADGE", "ERRATA_KINDS", "axes", "design_table", "eng", "errata_counts", "errata_md", "examples_table",
-           "format_axis", "glue_all", "setup", "show_equation", "table"]
+_HOME = {"axes": "figures", "format_axis": "figures", "glue_all": "notebook", "setup": "notebook",
+         "show_equation": "notebook", "BADGE": "tables", "ERRATA_KINDS": "tables", "design_table": "tables",
+         "eng": "tables", "errata_counts": "tables", "errata_md": "tables", "examples_table": "tables",
+         "table": "tables"}
+
+__all__ = sorted(_HOME)
+
+
+def __getattr__(name: str):
+    if name not in _HOME:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(import_module(f".{_HOME[name]}", __name__), name)

@@ -104,16 +104,21 @@ def design_table(table_name: str, result) -> Markdown:
     if isinstance(result, Infeasible):
         extra = "; ".join(f"{k} = {v:.4g}" if isinstance(v, float) else f"{k} = {v}" for k, v in result.achievable.items())
         return Markdown(f"**Cannot be met** (`{table_name}`): {result}  \nWhat can be met: {extra}")
-    rows = []
-    for out in OUTPUTS[table_name]:
-        v = getattr(result, out.key)
-        if out.unit == "%":
-            shown = f"{v:.2%}"
-        elif out.unit in ("F", "ohm", "A", "W", "V", "Hz"):
-            shown = eng(v, out.unit.replace("ohm", "Ω"))
-        elif isinstance(v, float):
-            shown = f"{v:.4g}"
-        else:
-            shown = str(v)
-        rows.append([out.key, shown])
+    rows = [[out.label, shown_value(getattr(result, out.key), out.unit)] for out in OUTPUTS[table_name]]
     return table(["result", "value"], rows)
+
+
+def shown_value(v, unit: str) -> str:
+    """A design output as a person reads it: engineering value with its unit, a percentage, '—' for a value
+    not designed (None), the warnings joined ('none' when there are none)."""
+    if v is None:
+        return "—"
+    if isinstance(v, (tuple, list)):
+        return "; ".join(map(str, v)) if v else "none"
+    if unit == "%":
+        return f"{v:+.2%}"
+    if unit in ("F", "ohm", "A", "W", "V", "Hz", "H"):
+        return eng(v, unit.replace("ohm", "Ω"))
+    if isinstance(v, float):
+        return f"{v:.4g}" + (f" {unit}" if unit else "")
+    return str(v)

@@ -255,3 +255,33 @@ def impedance(f, c, esr=0.0, esl=0.0):
 def esl_max(z_max, f):
     """The largest series inductance for which wL alone stays below z_max."""
     return z_max / (2 * math.pi * f)
+
+
+# ----------------------------------------------------------------------------------------------
+# motor-side timing (the design of handbook.design.commutation builds on these)
+
+def decay_rate(f_osc, damping_ratio):
+    """Envelope decay rate (1/s) of the rotor rocking about a detent, J x'' + c x' + K_t I p x = 0.
+
+    Underdamped (zeta < 1): zeta w_n. Overdamped: the slow root, w_n (zeta - sqrt(zeta^2 - 1)).
+    """
+    w = 2 * math.pi * validate.positive("f_osc", f_osc, "Hz")
+    z = validate.positive("damping_ratio", damping_ratio, "")
+    return w * (z - math.sqrt(max(z * z - 1.0, 0.0)))
+
+
+def settle_time(f_osc, damping_ratio, residual):
+    """Time for the rocking's envelope exp(-sigma t) to fall to ``residual`` of its first swing."""
+    validate.positive("residual", residual, "")
+    return math.log(1.0 / validate.fraction("residual", residual)) / decay_rate(f_osc, damping_ratio)
+
+
+def reverse_catch_time(rpm, pole_pairs, angle_el=150.0):
+    """Time a rotor turning backwards at ``rpm`` needs for ``angle_el`` electrical degrees.
+
+    After a commutation the floating winding of a reversed motor shows the wrong EMF polarity until the
+    rotor has turned back 150 to 180 electrical degrees (120 degrees of flat trapezoid top plus the 30
+    to 60 degrees left of the step): the watchdog must act within the shortest of these, 150 degrees,
+    which is 2.5 commutation intervals at that speed.
+    """
+    return angle_el / 60.0 * t_com(rpm, pole_pairs)

@@ -96,3 +96,100 @@ def theta_sa_required(p_d, t_ambient, package="TF", theta_cs=0.2, tj_max=DEVICE[
 def t_junction(p_d, t_ambient, theta_sa, package="TF", theta_cs=0.2):
     """Thermal Ohm's law through junction-case, case-sink and sink-ambient in series."""
     return t_ambient + p_d * (DEVICE["theta_jc"][package] + theta_cs + theta_sa)
+
+
+# --- the joint design's models (f_sw, L, C, R_DLY and the heat sink) -------------------------
+# Each names its assumption and the datasheet figure that calibrates it; the functions take floats,
+# numpy arrays and casadi symbols alike.
+
+#: the LM4651 table's typical frequencies against eq 5: R_OSC = 0 gives 200 kHz (eq 5: 250 kHz) and
+#: 15 kOhm 65 kHz (eq 5: 52.6 kHz). The disagreement is taken as eq 5's tolerance, not fitted away.
+F_TABLE = ((0.0, 200e3), (15e3, 65e3))
+F_TOL_LOW = 1 - F_TABLE[0][1] / f_sw_for(F_TABLE[0][0])  # 0.20: the oscillator may run 20 % slow
+F_TOL_HIGH = F_TABLE[1][1] / f_sw_for(F_TABLE[1][0]) - 1  # 0.235: or 23.5 % fast
+T_DEAD_0 = 27e-9  # s: LM4651 table, dead time at R_DLY = 0 (eq 4 gives 0.85 ns there)
+C_DEAD = 1.7e-12  # F: eq 4's slope, 1.7 pF per ohm of R_DLY
+RDS_ON_MAX_25 = 0.300  # ohm: LM4652 table, R_DS(on) maximum at 25 C
+RDS_TC = (DEVICE["rds_on_hot"] / 0.200 - 1) / (100.0 - 25.0)  # 1/K: 200 mOhm typ at 25 C -> 230 at 100 C
+T_OVERMOD_MAX = 350e-9  # s: no maximum printed; the Example Design's own 350 ns (typical 310 ns)
+I_LIMIT = 10.0  # A: "the inductor ripple current and the peak output current must be lower than 10 amps"
+I_Q_4651 = 36e-3  # A: LM4651 table, quiescent current with the LM4652 not connected (typical)
+L_REF, C_REF = 50e-6, 5e-6  # H, F: Output Stage Filtering, "a 50 uH inductor and a 5 uF Mylar capacitor"
+#: idle loss at +-20 V from the system table's 55 % efficiency at 5 W (R_DLY = 5 k, 125 kHz, 4 ohm): what is
+#: left of 5/0.55 - 5 W after conduction (200 mOhm typ, cold) and eq 9/10 switching. The table's I_CQ of
+#: 124 mA (x 40 V = 5.0 W) alone would exceed the 4.1 W of loss that 55 % allows, so it is not used.
+P_IDLE_REF = 5 / 0.55 - 5 - p_conduction(5.0, 4.0, 0.200) - p_switch(125e3, 5.0)
+
+
+def dead_time_total(r_dly):
+    """Dead time: the LM4651 table's 27 ns at R_DLY = 0 plus eq 4's 1.7 pF x R_DLY (eq 4's own 500 ohm
+    offset gives 0.85 ns where the table says 27 ns)."""
+    return T_DEAD_0 + C_DEAD * r_dly
+
+
+def rds_on_max(t_j):
+    """R_DS(on) maximum at the junction temperature: 300 mOhm at 25 C (LM4652 table) rising linearly by the
+    datasheet's own ratio, 200 -> 230 mOhm from 25 C to 100 C (0.2 %/K; typical, applied to the maximum)."""
+    return RDS_ON_MAX_25 * (1 + RDS_TC * (t_j - 25.0))
+
+
+def p_idle(supply):
+    """Idle (no-signal) loss of the pair, calibrated on 55 % at 5 W and +-20 V; a constant supply current
+    (3.35 W / 40 V = 84 mA), so it scales with the rails. Assumed independent of f_sw and of L."""
+    return P_IDLE_REF * supply / SUPPLY_REF
+
+
+def p_idle_4652(supply):
+    """The LM4652's share of the idle loss: all of it but the LM4651's own 36 mA x 2 V_s (conservative for
+    the LM4652's heat sink)."""
+    return p_idle(supply) - I_Q_4651 * 2 * supply
+
+
+def filter_f0(l_out, c_out):
+    """Bridge output filter corner, Output Stage Filtering: f_C = 1 / (2 pi sqrt(2 L C_BYP))."""
+    return 1 / (2 * math.pi * (2 * l_out * c_out) ** 0.5)
+
+
+def filter_q(l_out, c_out, r_load):
+    """Q of the bridge filter loaded by R_L: 2 L in series, C_BYP across the load, Q = R_L sqrt(C / 2L)."""
+    return r_load * (c_out / (2 * l_out)) ** 0.5
+
+
+def filter_gain2(f, l_out, c_out, r_load):
+    """|H(j 2 pi f)|^2 of H = 1 / (1 + s 2L/R_L + s^2 2 L C) (the load is a resistor: an assumption)."""
+    x = f / filter_f0(l_out, c_out)
+    return 1 / ((1 - x * x) ** 2 + (x / filter_q(l_out, c_out, r_load)) ** 2)
+
+
+def ripple_rms(f_sw, l_out, c_out, r_load, supply):
+    """Switching residue at the load, rms: the fundamental of the idle bridge output (a +-2 V_s square wave
+    at 50 % duty: amplitude 8 V_s / pi, its largest at any duty) through the filter. Harmonics ignored."""
+    return 8 * supply / math.pi / 2 ** 0.5 * filter_gain2(f_sw, l_out, c_out, r_load) ** 0.5
+
+
+def thd_n_joint(f_sw, l_out, c_out, p_test, r_load, supply):
+    """THD+N at p_test: 0.3 % at 10 W, 4 ohm, +-20 V, 125 kHz with 50 uH / 5 uF (system table; Output Stage
+    Filtering), scaled as a fixed error voltage (so as 1 / V_rms: sqrt(40 W ohm / (P R_L))) that is the
+    switching residue through the second-order filter ((f_C / f_sw)^2, i.e. 1 / (f_sw^2 L C)) and grows
+    with the rails (the datasheet's note on noise and supply). The exponent 2 is assumed."""
+    return (THD_REF * (F_REF / f_sw) ** 2 * (L_REF * C_REF / (l_out * c_out)) * supply / SUPPLY_REF
+            * (10.0 * 4.0 / (p_test * r_load)) ** 0.5)
+
+
+def inductor_peak(f_sw, l_out, c_out, v_peak, r_load, supply, f_audio):
+    """Peak inductor current (upper bound): the audio current at the peak output voltage (load and C_BYP at
+    the top of the band) plus half the largest ripple, V_s / (4 L f_sw) at zero output (the bridge's
+    ripple 2 V_s D (1 - D) / (L f_sw) peaks at D = 1/2)."""
+    i_audio = v_peak * (1 / r_load ** 2 + (2 * math.pi * f_audio * c_out) ** 2) ** 0.5
+    return i_audio + supply / (4 * l_out * f_sw)
+
+
+def v_clip_peak(f_sw, r_load=4.0, supply=20.0):
+    """Peak output voltage at the clipping point of :func:`p_clip` (the same calibrated model)."""
+    return (2 * r_load * p_clip(f_sw, r_load, supply)) ** 0.5
+
+
+def coil_loss(p_out, r_load, l_out, dcr_per_henry):
+    """Loss in the two filter coils: I_rms^2 x 2 DCR, with DCR proportional to L (one coil family; an
+    assumption, the datasheet gives no DCR but warns the coils' loss can be significant)."""
+    return p_out / r_load * 2 * dcr_per_henry * l_out

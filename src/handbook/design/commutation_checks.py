@@ -1,0 +1,67 @@
+"""Device-aware sanity of a commutation timing set: a valid design that the TDA5144 will not run as
+intended still designs, and says why in ``warnings`` (each naming the limit and where it is read)."""
+from __future__ import annotations
+
+from ..sources.an94002 import circuit as an94002
+
+#: CAP-TI internal-timing charge (0.2 V -> 0.3 V) and discharge currents, typical (TDA5144 datasheet;
+#: AN94002 2.1.3: 57 uA and 28 uA)
+I_TI_FAST, I_TI_DISCHARGE, V_TI_STEP = 57e-6, 28e-6, 0.1
+#: the smallest CAP-TI (AN94002 2.1.3)
+CAP_TI_MIN = 2e-9
+#: pin + board stray capacitance (assumption: a few pF for an SO20/SO28 pin and its track)
+STRAY = 5e-12
+#: above this a timing capacitor is in practice an electrolytic (assumption: film/ceramic end about here)
+FILM_MAX = 1e-6
+#: rated leakage floor of common aluminium electrolytics, '0.01 C V or 3 uA' (assumption; check the part)
+LEAK_FLOOR = 3e-6
+
+
+def capacitor_range(name: str, c: float, i_pin: float) -> list[str]:
+    """A capacitor outside what a timing pin is meant for."""
+    out = []
+    if STRAY / c > 0.01:
+        out.append(f"{name} = {c * 1e12:.3g} pF: the pin and board stray capacitance (a few pF; {STRAY * 1e12:g} pF "
+                   f"assumed) shifts its timing by {STRAY / c:.0%}: choose slower timing or check on the board")
+    if c > FILM_MAX:
+        out.append(f"{name} = {c * 1e6:.3g} uF is beyond film and ceramic values: an electrolytic's rated leakage "
+                   f"(commonly 0.01 C V or {LEAK_FLOOR * 1e6:g} uA, whichever is larger; an assumption, check the part) "
+                   f"rivals the pin's smallest current {i_pin * 1e6:.3g} uA (TDA5144 datasheet)")
+    return out
+
+
+def ti_cycle(cap_ti: float, tol: float) -> float:
+    """The least time CAP-TI's internal timing takes per commutation at its largest value: the step
+    0.2 -> 0.3 V at 57 uA and the discharge back at 28 uA, with no watchdog ramp at all (AN94002 2.1.3).
+    A flyback adds its own length and a ramp to discharge, so the real cycle is longer."""
+    c = cap_ti * (1 + tol)
+    return c * V_TI_STEP / I_TI_FAST + c * V_TI_STEP / I_TI_DISCHARGE
+
+
+def speed_limits(s: dict, start, watchdog) -> list[str]:
+    """Speeds the IC cannot commutate with this timing set."""
+    out = []
+    n = s["pole_pairs"]
+    fast, slow = an94002.t_com(s["rpm_max"], n), an94002.t_com(s["rpm_min"], n)
+    cap_ti = CAP_TI_MIN if watchdog is None else watchdog.cap_ti
+    cycle = ti_cycle(cap_ti, s["tolerance"])
+    if cycle >= fast:
+        which = "the chosen" if watchdog else "even the smallest allowed (2000 pF, AN94002 2.1.3)"
+        out.append(f"rpm_max = {s['rpm_max']:g} rpm: the commutation interval {fast * 1e6:.3g} us is shorter than "
+                   f"the {cycle * 1e6:.3g} us CAP-TI needs at least for its internal timing with {which} CAP-TI "
+                   f"(0.2 -> 0.3 V at 57 uA, back at 28 uA: TDA5144 datasheet, AN94002 2.1.3): the IC cannot "
+                   f"commutate this fast")
+    if start is not None and start.period_min <= slow:
+        out.append(f"the shortest start period {start.period_min * 1e3:.3g} ms is not longer than the commutation "
+                   f"interval at rpm_min ({slow * 1e3:.3g} ms): the start oscillator, reset only by commutations "
+                   f"(AN94002 2.1.1), would fire while the motor runs")
+    return out
+
+
+def warnings(s: dict, cap_cd: float, start, watchdog) -> list[str]:
+    out = capacitor_range("CAP-CD", cap_cd, s["i_charge_min"])
+    if start is not None:
+        out += capacitor_range("CAP-ST", start.cap_st, s["i_st_min"])
+    if watchdog is not None:
+        out += capacitor_range("CAP-TI", watchdog.cap_ti, s["i_wd_min"])
+    return out + speed_limits(s, start, watchdog)

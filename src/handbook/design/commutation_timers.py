@@ -1,0 +1,206 @@
+"""CAP-ST (start oscillator) and CAP-TI (watchdog) of the TDA5143/TDA5144 from the motor's data.
+
+Both choices are one-dimensional and every quantity is monotonic in each input (charge balance,
+t = C dV / I, and eq 2's sqrt(K_t I p / J)), so the worst case sits at a corner of the tolerance box and
+the continuous bound has an exact closed form; the series value is snapped from it and re-checked at
+every corner (:func:`corners`, 2^k points). No numerical optimiser is needed and none is used.
+
+* CAP-ST: the smallest capacitor whose shortest start period (smallest C, largest current) still lets
+  the slowest rotor rocking (smallest K_t and start current, largest J; eq 2) decay to ``residual``;
+  the longest period (largest C, smallest current) must stay within ``t_start_max`` if given.
+* CAP-TI: the shortest watchdog time (smallest C, largest current) must outlast the flyback pulse; the
+  longest must be shorter than a reverse-turning rotor needs for 150 electrical degrees at
+  ``rpm_reverse`` (if given). With both, the value maximising the smaller of the two ratios.
+"""
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass
+
+from ..core import InputError, series
+from ..sources.an94002 import circuit as an94002
+from .solvers import Infeasible
+
+TABLE = "commutation"
+#: CAP-TI watchdog ramp 0.3 V -> 2.2 V (AN94002 2.1.3; TDA5144 datasheet)
+V_TI = (0.3, 2.2)
+#: the smallest CAP-TI (AN94002 2.1.3: "The minimum value for CAP-TI is 2000 pF")
+CAP_TI_MIN = 2e-9
+START_KEYS = ("inertia", "torque_constant", "start_current")
+
+
+def corners(f, ranges: dict) -> list[tuple[float, dict]]:
+    """f evaluated at every corner of the box ``ranges`` = {name: (low, high)}: [(value, corner)]."""
+    names = list(ranges)
+    out = []
+    for ends in itertools.product((0, 1), repeat=len(names)):
+        point = {n: ranges[n][e] for n, e in zip(names, ends)}
+        out.append((f(**point), point))
+    return out
+
+
+def worst(f, ranges: dict, largest: bool) -> tuple[float, dict]:
+    """The largest (or smallest) value of ``f`` over all corners, with its corner."""
+    pick = max if largest else min
+    return pick(corners(f, ranges), key=lambda vc: vc[0])
+
+
+def spread(x: float, tol: float) -> tuple[float, float]:
+    return x * (1 - tol), x * (1 + tol)
+
+
+def motor_given(s: dict) -> bool:
+    """True when J, K_t and the start current are all given; a part of them is an input error."""
+    given = [k for k in START_KEYS if s[k] is not None]
+    if given and len(given) < len(START_KEYS):
+        missing = [f"commutation.{k}" for k in START_KEYS if s[k] is None]
+        raise InputError(f"CAP-ST needs all of {', '.join('commutation.' + k for k in START_KEYS)}: "
+                         f"{', '.join(missing)} not given")
+    return bool(given)
+
+
+# ----------------------------------------------------------------------------------------------
+# CAP-ST
+
+@dataclass(frozen=True)
+class StartResult:
+    cap_st: float
+    bound: float  # closed-form smallest continuous capacitor
+    f_osc_min: float  # slowest rotor rocking over the motor's corners (eq 2)
+    f_osc_max: float
+    settle: float  # rocking decay time at the slowest corner
+    period_min: float  # shortest start period of the chosen capacitor (worst corner)
+    period_max: float
+    margin: float  # period_min / settle - 1
+    next_smaller: float
+    binding: str
+
+
+def rocking_box(s: dict) -> dict:
+    t = s["motor_tolerance"]
+    return {"torque_constant": spread(s["torque_constant"], t), "current": spread(s["start_current"], t),
+            "inertia": spread(s["inertia"], t)}
+
+
+def f_osc(s: dict):
+    return lambda torque_constant, current, inertia: an94002.oscillation_frequency(
+        torque_constant, current, s["pole_pairs"], inertia)
+
+
+def start_box(c: float, s: dict) -> dict:
+    return {"cap": spread(c, s["tolerance"]), "i_cap": (s["i_st_min"], s["i_st_max"])}
+
+
+def start_period(s: dict):
+    return lambda cap, i_cap: an94002.start_period(cap, i_cap, s["v_st_low"], s["v_st_high"])
+
+
+def check_start(c: float, s: dict) -> dict:
+    """Every corner of one CAP-ST value: shortest and longest period against the rocking's decay."""
+    f_lo = worst(f_osc(s), rocking_box(s), largest=False)[0]
+    settle = an94002.settle_time(f_lo, s["damping_ratio"], s["residual"])
+    p_lo = worst(start_period(s), start_box(c, s), largest=False)[0]
+    p_hi = worst(start_period(s), start_box(c, s), largest=True)[0]
+    return {"settle": settle, "period_min": p_lo, "period_max": p_hi, "settles": p_lo >= settle * (1 - 1e-12),
+            "fast_enough": s["t_start_max"] is None or p_hi <= s["t_start_max"] * (1 + 1e-12)}
+
+
+def design_start(s: dict) -> StartResult | None:
+    """Smallest series CAP-ST whose shortest period outlasts the slowest rocking's decay (closed form)."""
+    if not motor_given(s):
+        return None
+    f_lo = worst(f_osc(s), rocking_box(s), largest=False)[0]
+    settle = an94002.settle_time(f_lo, s["damping_ratio"], s["residual"])
+    # period_min = 2 C (1 - tol) dV / I_max >= settle, exactly:
+    bound = settle * s["i_st_max"] / (2 * (s["v_st_high"] - s["v_st_low"]) * (1 - s["tolerance"]))
+    chosen = series.at_least(s["series"], bound * (1 - 1e-12))
+    chk = check_start(chosen, s)
+    if not (chk["settles"] and chk["fast_enough"]):
+        shortest_max = chk["period_max"]
+        raise Infeasible(TABLE, f"no {s['series']} CAP-ST lets the rocking decay to {s['residual']:g} "
+                         f"(damping ratio {s['damping_ratio']:g}) and keeps the start period within "
+                         f"{s['t_start_max']:g} s: the smallest that settles ({chosen * 1e9:.4g} nF) may take "
+                         f"{shortest_max:.3g} s", {"cap_st": chosen, "t_start_max_possible": shortest_max,
+                                                    "settle_time": settle})
+    return StartResult(
+        cap_st=chosen, bound=bound, f_osc_min=f_lo, f_osc_max=worst(f_osc(s), rocking_box(s), largest=True)[0],
+        settle=settle, period_min=chk["period_min"], period_max=chk["period_max"],
+        margin=chk["period_min"] / settle - 1, next_smaller=series.at_most(s["series"], chosen * (1 - 1e-9)),
+        binding="the rocking must decay before the next start pulse (slowest rotor, shortest period)")
+
+
+# ----------------------------------------------------------------------------------------------
+# CAP-TI
+
+@dataclass(frozen=True)
+class WatchdogResult:
+    cap_ti: float
+    t_wd_min: float  # shortest watchdog time (smallest C, largest current)
+    t_wd_max: float
+    t_reverse: float | None  # the limit from rpm_reverse
+    rpm_reverse_caught: float  # fastest reverse rotation the longest watchdog still catches
+    margin_flyback: float  # t_wd_min / flyback_time - 1
+    margin_reverse: float | None  # t_reverse / t_wd_max - 1
+    binding: str
+
+
+def watchdog_time(s: dict):
+    return lambda cap, i_wd: an94002.watchdog_time(cap, i_wd, *V_TI)
+
+
+def check_watchdog(c: float, s: dict) -> dict:
+    box = {"cap": spread(c, s["tolerance"]), "i_wd": (s["i_wd_min"], s["i_wd_max"])}
+    lo = worst(watchdog_time(s), box, largest=False)[0]
+    hi = worst(watchdog_time(s), box, largest=True)[0]
+    t_rev = None if s["rpm_reverse"] is None else an94002.reverse_catch_time(s["rpm_reverse"], s["pole_pairs"])
+    return {"t_wd_min": lo, "t_wd_max": hi, "t_reverse": t_rev,
+            "long_enough": lo >= s["flyback_time"] * (1 - 1e-12) and c >= CAP_TI_MIN * (1 - 1e-12),
+            "short_enough": t_rev is None or hi <= t_rev * (1 + 1e-12)}
+
+
+def watchdog_score(c: float, s: dict) -> float:
+    """The smaller of the two ratios (flyback side, reverse side); the choice maximises it."""
+    chk = check_watchdog(c, s)
+    ratios = [chk["t_wd_min"] / s["flyback_time"]]
+    if chk["t_reverse"] is not None:
+        ratios.append(chk["t_reverse"] / chk["t_wd_max"])
+    return min(ratios)
+
+
+def cap_ti_choice(s: dict) -> float:
+    """Closed form: the smallest C meeting the flyback; with a reverse limit the geometric middle of the
+    two bounds, snapped to whichever neighbouring series value has the larger smaller ratio."""
+    dv = V_TI[1] - V_TI[0]
+    low = s["flyback_time"] * s["i_wd_max"] / (dv * (1 - s["tolerance"]))
+    if s["rpm_reverse"] is None:
+        return series.at_least(s["series"], max(low, CAP_TI_MIN) * (1 - 1e-12))
+    high = an94002.reverse_catch_time(s["rpm_reverse"], s["pole_pairs"]) * s["i_wd_min"] / (dv * (1 + s["tolerance"]))
+    middle = math.sqrt(low * high)
+    below = series.at_most(s["series"], middle)
+    candidates = [c for c in (below, series.at_least(s["series"], middle)) if c >= CAP_TI_MIN * (1 - 1e-12)]
+    candidates = candidates or [series.at_least(s["series"], CAP_TI_MIN * (1 - 1e-12))]
+    return max(candidates, key=lambda c: watchdog_score(c, s))
+
+
+def design_watchdog(s: dict) -> WatchdogResult | None:
+    if s["flyback_time"] is None:
+        return None
+    chosen = cap_ti_choice(s)
+    chk = check_watchdog(chosen, s)
+    caught = 150.0 / 60.0 * 10.0 / (s["pole_pairs"] * chk["t_wd_max"])
+    if not (chk["long_enough"] and chk["short_enough"]):
+        raise Infeasible(TABLE, f"no {s['series']} CAP-TI both outlasts the {s['flyback_time'] * 1e3:.3g} ms flyback "
+                         f"(and is at least 2000 pF) and catches reverse rotation at {s['rpm_reverse']:g} rpm: the "
+                         f"best ({chosen * 1e9:.4g} nF) catches it only up to {caught:.0f} rpm",
+                         {"cap_ti": chosen, "rpm_reverse_caught": caught, "t_wd_min": chk["t_wd_min"]})
+    t_rev = chk["t_reverse"]
+    m_fly = chk["t_wd_min"] / s["flyback_time"] - 1
+    m_rev = None if t_rev is None else t_rev / chk["t_wd_max"] - 1
+    if m_rev is None:
+        binding = "watchdog outlasts the flyback (smallest C, largest current)"
+    else:
+        binding = ("balanced: flyback and reverse rotation" if abs(m_fly - m_rev) < 1e-9 else
+                   "flyback (shortest watchdog)" if m_fly < m_rev else "reverse rotation (longest watchdog)")
+    return WatchdogResult(cap_ti=chosen, t_wd_min=chk["t_wd_min"], t_wd_max=chk["t_wd_max"], t_reverse=t_rev,
+                          rpm_reverse_caught=caught, margin_flyback=m_fly, margin_reverse=m_rev, binding=binding)
