@@ -13,7 +13,8 @@ import pytest  # noqa: E402
 from matplotlib.ticker import EngFormatter  # noqa: E402
 
 from handbook import report  # noqa: E402
-from handbook.design import current_limiter  # noqa: E402
+from handbook.design import class_d, commutation, current_limiter  # noqa: E402
+from handbook.design.class_d_report import datasheet_application  # noqa: E402
 from handbook.report import design_plots  # noqa: E402
 
 
@@ -41,6 +42,43 @@ def test_design_space_plot_is_silent_on_a_busy_machine(monkeypatch):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         _render(fig)
+
+
+NOTE_NETWORK = (267.0, 5.6e3, 16e3, 5.6e3, 16e3)  # AN94002's R9..R13
+#: every design plot the book draws, as the chapters and "Design your own" call it
+PLOTS = {
+    "timing_ranges": lambda d: design_plots.timing_ranges(d["commutation"]),
+    "timing_swing": lambda d: design_plots.timing_swing(d["commutation"]),
+    "start_settling": lambda d: design_plots.start_settling(d["commutation"], {"AN94002": 0.22e-6}),
+    "limiter_histogram": lambda d: design_plots.limiter_histogram(
+        d["current_limiter"], {"the note's method": (0.075, NOTE_NETWORK)}, n=10_000)[0],
+    "limiter_design_space": lambda d: design_plots.limiter_design_space(d["current_limiter"],
+                                                                        {"the note's method": (0.075, 267.0)}),
+    "limiter_sensitivity": lambda d: design_plots.limiter_sensitivity(current_limiter.sensitivity(
+        d["current_limiter"].r7, d["current_limiter"].network, d["current_limiter"].spec)),
+    "class_d_margins": lambda d: design_plots.class_d_margins(
+        d["class_d"], {"datasheet's parts": datasheet_application(d["class_d"].spec)["margins"]}),
+    "class_d_design_space": lambda d: design_plots.class_d_design_space(d["class_d"]),
+    "class_d_pareto": lambda d: design_plots.class_d_pareto(d["class_d"].spec, [0.003, 0.01], {"x": (0.004, 0.85)})[0],
+}
+
+
+@pytest.fixture(scope="module")
+def designs():
+    motor = dict(inertia=72e-6, torque_constant=25e-3, start_current=0.5, flyback_time=1e-3)
+    return {"commutation": commutation.design(motor), "current_limiter": current_limiter.design({}),
+            "class_d": class_d.design({})}
+
+
+@pytest.mark.parametrize("name", sorted(PLOTS))
+def test_every_design_plot_draws_silently_on_a_busy_machine(name, designs, monkeypatch):
+    """Each plot with the new results, as the book calls it after report.setup(): no exception and nothing
+    on stderr (a warning would be a difference in nbval), even when the legend search is slow."""
+    monkeypatch.setattr(matplotlib.legend, "time", _SlowClock())
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        report.setup()
+        _render(PLOTS[name](designs))
 
 
 def test_the_clock_does_make_a_best_legend_warn(monkeypatch):

@@ -116,7 +116,9 @@ def shown_value(v, unit: str) -> str:
     if isinstance(v, (tuple, list)):
         return "; ".join(map(str, v)) if v else "none"
     if unit == "%":
-        return f"{v:+.2%}"
+        return f"{v:.2%}"
+    if unit == "C":
+        return f"{v:.4g} °C"
     if unit in ("F", "ohm", "A", "W", "V", "Hz", "H"):
         return eng(v, unit.replace("ohm", "Ω"))
     if isinstance(v, float):
