@@ -32,7 +32,7 @@ def test_design_cli_empty_spec_designs_the_notes_examples(tmp_path):
 def test_design_cli_text_output_has_units(tmp_path):
     out = _run(tmp_path, "")
     assert out.returncode == 0, out.stderr
-    assert "8.2 nF" in out.stdout and "390 mΩ" in out.stdout and " kHz" in out.stdout and "e-0" not in out.stdout
+    assert "8.2 nF" in out.stdout and "430 mΩ" in out.stdout and " kHz" in out.stdout and "e-0" not in out.stdout
 
 
 @pytest.mark.parametrize("text,needle", [

@@ -47,6 +47,8 @@ SANE = {
         "r7_tolerance": st.sampled_from([0.01, 0.02, 0.05]), "zener_voltage": st.floats(4.7, 12),
         "zener_tolerance": st.sampled_from([0.01, 0.02, 0.05]), "zener_tc": st.floats(0, 8e-3),
         "temp_span": st.floats(0, 50), "offset": st.floats(0, 0.01), "input_bias": st.floats(0, 1e-6),
+        "input_offset_current": st.floats(0, 3e-7), "divider_current_max": st.floats(2e-4, 1e-2),
+        "r7_power_rating": st.floats(0.1, 5),
         "input_headroom": st.floats(0, 3), "ic": st.sampled_from(["TDA5144", "TDA5143"]),
         "r7_series": st.sampled_from(["E12", "E24", "E96"]), "r9_series": st.sampled_from(["E24", "E96"]),
         **{f"r{n}": PIN for n in (9, 10, 11, 12, 13)},
@@ -129,9 +131,9 @@ def _reverify_commutation(c):
 
 def _reverify_limiter(lim):
     s, m = lim.spec, lim.spec["min_margin"]
-    lo, hi, head = (float(x) for x in limiter_corners(lim.r7, lim.network, s))
+    lo, hi, head, i_div = (float(x) for x in limiter_corners(lim.r7, lim.network, s))
     assert lo >= s["i_no_trip"] * (1 + m) * (1 - 1e-9) and hi <= s["i_must_trip"] * (1 - m) * (1 + 1e-9)
-    assert head >= s["input_headroom"] - 1e-9
+    assert head >= s["input_headroom"] - 1e-9 and i_div <= s["divider_current_max"] * (1 + 1e-9)
     assert (lim.i_trip_min, lim.i_trip_max) == pytest.approx((lo, hi), rel=1e-9)
     for name, value in zip(("r7", "r9", "r10", "r11", "r12", "r13"), (lim.r7, *lim.network)):
         if s[name] is not None:

@@ -67,9 +67,11 @@ def search(values: list[np.ndarray], relax, evaluate, threshold: float, gap: flo
     counter = itertools.count()
     root = (tuple(0 for _ in range(k)), tuple(len(v) - 1 for v in values))
     heap = [(-np.inf, next(counter), root, None)]
+    pruned = -np.inf  # the largest bound of a node dropped only because it could not beat the best by gap
     while heap:
         neg_parent, _, (lo, hi), x0 = heapq.heappop(heap)
         if -neg_parent < max(threshold, best.score + gap):
+            pruned = max(pruned, -neg_parent) if -neg_parent >= threshold else pruned
             continue
         if best.nodes >= (max_nodes if best.choice is not None else max_nodes_unsolved):
             best.proven, best.bound = False, -neg_parent
@@ -90,6 +92,7 @@ def search(values: list[np.ndarray], relax, evaluate, threshold: float, gap: flo
         bound, x, state = res
         best.relaxations.append(bound)
         if bound < max(threshold, best.score + gap):
+            pruned = max(pruned, bound) if bound >= threshold else pruned
             continue
         _take(best, values, [range(lo[i], hi[i] + 1) if i == scan else _around(values[i], lo[i], hi[i], x[i])
                              for i in range(k)], evaluate, threshold)
@@ -110,6 +113,6 @@ def search(values: list[np.ndarray], relax, evaluate, threshold: float, gap: flo
             split -= 1
         for child in ((lo, hi[:i] + (split,) + hi[i + 1:]), (lo[:i] + (split + 1,) + lo[i + 1:], hi)):
             heapq.heappush(heap, (-bound, next(counter), child, state))
-    if best.proven:
-        best.bound = best.score
+    if best.proven:  # every node left was dropped for its bound: none beats the best by more than gap
+        best.bound = max(best.score, pruned)
     return best

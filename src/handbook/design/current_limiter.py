@@ -16,6 +16,7 @@ network is re-verified at every corner by :func:`limiter_network.verify`.
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from dataclasses import dataclass
@@ -23,7 +24,7 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from ..core import series
+from ..core import InputError, series
 from ..sources.an94002 import circuit as an94002
 from . import branch_bound
 from . import limiter_network as net
@@ -34,12 +35,12 @@ TABLE = "current_limiter"
 RESISTORS = ("r7",) + net.DIVIDER
 #: the motor ICs' own output current limits, minimum (datasheet_facts: TDA5144 / TDA5143T datasheets)
 IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
-#: a sense resistor dissipating more than this needs a power part (2512 metal-strip chips are rated 1 to 3 W)
-R7_POWER_NORMAL = 2.0
 zener_range = net.zener_range
-#: the tie-break is settled to within this worst margin (0.1 percentage point): the bound proves no
+#: the tie-break is settled to within this worst margin (0.25 percentage point): the bound proves no
 #: network with the same R7 is better by more
-GAP = 1e-3
+GAP = 2.5e-3
+#: a node holding at most this many networks is evaluated whole (about the cost of one IPOPT solve)
+LEAF_SIZE = 2000
 
 
 @dataclass(frozen=True)
@@ -58,6 +59,7 @@ class LimiterResult(Result):
     margin_low: float
     margin_high: float
     headroom_min: float
+    divider_current: float
     binding: str
     warnings: tuple
     r7_relaxed: float
@@ -78,8 +80,9 @@ def checked(spec: dict | None) -> dict:
     ordered(TABLE, "i_no_trip", "i_must_trip", s, "A")
     for name in RESISTORS:
         ordered(TABLE, f"{name}_min", f"{name}_max", s, "ohm", strict=False)
+    for name in RESISTORS:  # a range holding no series value is bad input, found before any solver
+        choices(s, name)
     if s["i_no_trip"] * (1 + s["min_margin"]) >= s["i_must_trip"] * (1 - s["min_margin"]):
-        from ..core import InputError
         raise InputError(f"{TABLE}.min_margin = {s['min_margin']:g} leaves no room between i_no_trip = "
                          f"{s['i_no_trip']:g} A and i_must_trip = {s['i_must_trip']:g} A: use a smaller margin")
     return s
@@ -89,43 +92,64 @@ def choices(s: dict, name: str) -> np.ndarray:
     """The values a resistor may take: its pinned value, or its series within its range."""
     if s[name] is not None:
         return np.array([float(s[name])])
-    return np.array(series.values(s[f"{name}_series"], s[f"{name}_min"], s[f"{name}_max"]))
+    values = series.values(s[f"{name}_series"], s[f"{name}_min"], s[f"{name}_max"])
+    if not values:
+        name_series = s[f"{name}_series"]
+        below, above = series.at_most(name_series, s[f"{name}_min"]), series.at_least(name_series, s[f"{name}_max"])
+        raise InputError(f"{TABLE}.{name}_min = {s[name + '_min']:g} ohm .. {TABLE}.{name}_max = {s[name + '_max']:g} ohm "
+                         f"holds no {s[name + '_series']} value: widen it to include {below:g} or {above:g} ohm")
+    return np.array(values)
 
 
 def scores(r7: float, r: np.ndarray, s: dict) -> np.ndarray:
     """Exact worst margin of each network (rows of R9..R13) with this R7; -inf where a headroom fails."""
     v = net.verify(r7, tuple(r.T), s)
     worst = np.minimum(v["margin_low"], v["margin_high"])
-    ok = (v["headroom_min"] >= s["input_headroom"] - 1e-12) & (v["i_trip_min"] > 0)
+    ok = ((v["headroom_min"] >= s["input_headroom"] - 1e-12) & (v["i_trip_min"] > 0)
+          & (v["divider_current"] <= s["divider_current_max"] * (1 + 1e-12)))
     return np.where(ok, worst, -np.inf)
 
 
-class Relaxation:
-    """The continuous problem in x = (ln R7, ln R9 .. ln R13, t), t the worst margin; one IPOPT instance,
-    called with the node's bounds. Weight w = 1: minimise ln R7 (t >= min_margin); w = 0: maximise t."""
+#: the spec values the relaxation takes as parameters (one NLP, built once per process, serves every spec)
+RELAX_KEYS = ("zener_voltage", "zener_tolerance", "zener_tc", "temp_span", "input_bias", "input_offset_current",
+              "offset", "resistor_tolerance", "r7_tolerance", "i_no_trip", "i_must_trip", "input_headroom",
+              "divider_current_max")
 
-    def __init__(self, s: dict, options: dict | None = None):
-        x, w = ca.SX.sym("x", 7), ca.SX.sym("w")
-        r7, r, t = ca.exp(x[0]), tuple(ca.exp(x[i]) for i in range(1, 6)), x[6]
-        lows, highs = net.trip_voltage_corners(r, s, both_ends=False)
-        h = max(s["input_headroom"], 1.0)
-        g = ([lo / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1 - t for lo in lows]
-             + [1 - hi / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"]) - t for hi in highs]
-             + [(v - s["input_headroom"]) / h for v in net.headroom_corners(r, s)])
-        self.n_g = len(g)
-        nlp = {"x": x, "p": w, "f": w * x[0] - (1 - w) * x[6], "g": ca.vertcat(*g)}
-        base = {**IPOPT_OPTIONS, "ipopt.tol": 1e-9, "ipopt.mu_strategy": "adaptive", **(options or {})}
-        self.solver = ca.nlpsol("limiter", "ipopt", nlp, base)
-        # a child node starts from its parent's solution and multipliers: a handful of iterations, not 30
-        self.warm = ca.nlpsol("limiter_warm", "ipopt", nlp, {**base, "ipopt.warm_start_init_point": "yes",
-                                                             "ipopt.mu_init": 1e-5, "ipopt.warm_start_bound_push": 1e-9,
-                                                             "ipopt.warm_start_mult_bound_push": 1e-9})
+
+@functools.cache
+def _solvers():
+    """(cold, warm) IPOPT instances of the relaxation, the spec's values as parameters."""
+    x, w, q = ca.SX.sym("x", 7), ca.SX.sym("w"), ca.SX.sym("q", len(RELAX_KEYS) + 1)
+    s = dict(zip(RELAX_KEYS, ca.vertsplit(q[:-1])))
+    r7, r, t = ca.exp(x[0]), tuple(ca.exp(x[i]) for i in range(1, 6)), x[6]
+    lows, highs = net.trip_voltage_corners(r, s, relaxed=True)
+    g = ([lo / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1 - t for lo in lows]
+         + [1 - hi / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"]) - t for hi in highs]
+         + [(v - s["input_headroom"]) / q[-1] for v in net.headroom_corners(r, s)]
+         + [1 - net.divider_current(r, s) / s["divider_current_max"]])
+    nlp = {"x": x, "p": ca.vertcat(w, q), "f": w * x[0] - (1 - w) * x[6], "g": ca.vertcat(*g)}
+    base = {**IPOPT_OPTIONS, "ipopt.tol": 1e-9, "ipopt.mu_strategy": "adaptive"}
+    # a child node starts from its parent's solution and multipliers: a handful of iterations, not 30
+    warm = {**base, "ipopt.warm_start_init_point": "yes", "ipopt.mu_init": 1e-5, "ipopt.warm_start_bound_push": 1e-9,
+            "ipopt.warm_start_mult_bound_push": 1e-9}
+    return ca.nlpsol("limiter", "ipopt", nlp, base), ca.nlpsol("limiter_warm", "ipopt", nlp, warm)
+
+
+class Relaxation:
+    """The continuous problem in x = (ln R7, ln R9 .. ln R13, t), t the worst margin, for one spec; called
+    with a node's bounds. Weight w = 1: minimise ln R7 (t >= min_margin); w = 0: maximise t."""
+
+    def __init__(self, s: dict):
+        # the offset current counts up to twice the bias current (beyond that the two currents are free)
+        values = {**s, "input_offset_current": min(s["input_offset_current"], 2 * s["input_bias"])}
+        self.q = [float(values[k]) for k in RELAX_KEYS] + [max(s["input_headroom"], 1.0)]
+        self.solver, self.warm = _solvers()
 
     def solve(self, lb, ub, x0, weight: float, t_min: float = -10.0, warm: dict | None = None):
         """(x, status, state) of the box lb..ub (resistor values), or None when IPOPT proves it infeasible.
         ``warm``: a parent's state (its x and multipliers)."""
         solver = self.solver if warm is None else self.warm
-        args = dict(x0=x0, p=weight, lbx=[*np.log(lb), t_min], ubx=[*np.log(ub), 10.0], lbg=0, ubg=np.inf)
+        args = dict(x0=x0, p=[weight, *self.q], lbx=[*np.log(lb), t_min], ubx=[*np.log(ub), 10.0], lbg=0, ubg=np.inf)
         if warm is not None:
             args.update(x0=np.clip(warm["x"], args["lbx"], args["ubx"]), lam_x0=warm["lam_x"], lam_g0=warm["lam_g"])
         r = solver(**args)
@@ -144,7 +168,25 @@ def _root(s: dict, relax: Relaxation, lists: list) -> float | None:
     return math.exp(res[0][0])
 
 
-def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold: float, max_nodes: int = 100):
+def polish(r7: float, network: tuple, s: dict, lists: list, rounds: int = 8) -> tuple[tuple, float]:
+    """Local search after the branch and bound's node budget: each divider resistor one series step either
+    way, R9 ten steps, every combination evaluated exactly; repeated while it improves the worst margin."""
+    idx = [int(np.searchsorted(v, x)) for v, x in zip(lists[1:], network)]
+    best = float(scores(r7, np.array([network]), s)[0])
+    for _ in range(rounds):
+        pools = [range(max(0, j - (10 if i == 0 else 1)), min(len(v) - 1, j + (10 if i == 0 else 1)) + 1)
+                 for i, (j, v) in enumerate(zip(idx, lists[1:]))]
+        grid = np.array(list(itertools.product(*pools)))
+        cand = np.stack([lists[1 + i][grid[:, i]] for i in range(5)], axis=1)
+        sc = scores(r7, cand, s)
+        k = int(np.argmax(sc))
+        if sc[k] <= best + 1e-12:
+            break
+        best, idx = float(sc[k]), list(grid[k])
+    return tuple(float(lists[1 + i][j]) for i, j in enumerate(idx)), best
+
+
+def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold: float, max_nodes: int = 40):
     """Branch and bound over R9..R13 with R7 fixed: the network with the largest worst margin."""
     def relaxed(lb, ub, state):
         res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0,
@@ -159,7 +201,7 @@ def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold:
         return float(x[6]) + 1e-9, np.exp(x[1:6]), new_state
 
     return branch_bound.search(lists[1:], relaxed, lambda c: scores(r7, c, s), threshold, gap=GAP, scan=0,
-                               max_nodes=max_nodes, cheap_bound=lambda lb, ub: vertex_bound(r7, lb, ub, s))
+                               max_nodes=max_nodes, leaf_size=LEAF_SIZE, cheap_bound=lambda lb, ub: vertex_bound(r7, lb, ub, s))
 
 
 def vertex_bound(r7: float, lb, ub, s: dict) -> float:
@@ -175,7 +217,7 @@ def vertex_bound(r7: float, lb, ub, s: dict) -> float:
     m = np.concatenate([np.stack(lows) / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1,
                         1 - np.stack(highs) / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"])])
     head = np.stack(net.headroom_corners(tuple(vert), s))
-    if (head.max(axis=1) < s["input_headroom"] - 1e-12).any():
+    if (head.max(axis=1) < s["input_headroom"] - 1e-12).any() or net.divider_current(ub, s) > s["divider_current_max"]:
         return -np.inf
     return float(m.max(axis=1).min())
 
@@ -197,6 +239,8 @@ def solve(s: dict) -> dict:
     for r7 in lists[0][lists[0] >= found["r7_relaxed"] * (1 - 1e-9)]:
         found["tried"] += 1
         out = _best_network(float(r7), s, relax, lists, s["min_margin"] - 1e-12)
+        if out.choice is not None and not out.proven:  # the node budget ran out: polish what was found
+            out.choice, out.score = polish(float(r7), out.choice, s, lists)
         if out.choice is not None:
             return {**found, "r7": float(r7), "network": out.choice, "outcome": out}
         if not out.proven:
@@ -220,7 +264,7 @@ def design(spec: dict | None = None) -> LimiterResult:
         spec=s, r7=r7, r9=r9, r10=r10, r11=r11, r12=r12, r13=r13, i_trip_min=float(v["i_trip_min"]),
         i_trip_max=float(v["i_trip_max"]), i_trip_nominal=float(v_nominal / r7), v_cs_nominal=float(v_nominal),
         p_r7=float(v["i_trip_max"]) ** 2 * r7 * (1 + s["r7_tolerance"]), margin_low=m_lo, margin_high=m_hi,
-        headroom_min=float(v["headroom_min"]),
+        headroom_min=float(v["headroom_min"]), divider_current=float(v["divider_current"]),
         binding="i_no_trip (lowest trip current)" if m_lo <= m_hi else "i_must_trip (highest trip current)",
         r7_relaxed=found["r7_relaxed"], nodes=out.nodes, r7_tried=found["tried"], margin_bound=out.bound,
         unproven=found["unproven"])
@@ -234,16 +278,16 @@ def warnings(r: dict, s: dict) -> list[str]:
     if r["i_trip_max"] > limit:
         out.append(f"the highest trip current {r['i_trip_max']:.3g} A is above the {s['ic']}'s own output "
                    f"limit (minimum {limit:g} A): on some boards the IC limits first")
-    if r["p_r7"] > R7_POWER_NORMAL:
-        out.append(f"R7 dissipates up to {r['p_r7']:.3g} W at the highest trip current: more than a normal "
-                   f"{R7_POWER_NORMAL:g} W sense resistor")
+    if r["p_r7"] > s["r7_power_rating"]:
+        out.append(f"R7 dissipates up to {r['p_r7']:.3g} W while the limiter holds a stalled motor at the highest "
+                   f"trip current: more than its {s['r7_power_rating']:g} W rating (r7_power_rating)")
     return out
 
 
 #: what spreads the trip current, and the spec keys that set each (zeroed one at a time by sensitivity)
 SPREAD_SOURCES = {"R9..R13 tolerance": ("resistor_tolerance",), "R7 tolerance": ("r7_tolerance",),
                   "zener tolerance": ("zener_tolerance",), "zener drift": ("zener_tc",), "op-amp offset": ("offset",),
-                  "op-amp bias current": ("input_bias",)}
+                  "op-amp bias current": ("input_bias", "input_offset_current")}
 
 
 def sensitivity(r7: float, network, s: dict) -> list[tuple[str, float, float]]:
@@ -296,9 +340,11 @@ def monte_carlo_trip(r7: float, network, s: dict, n: int = 100_000, seed: int = 
 
     vz_lo, vz_hi = zener_range(s)
     r9, r10, r11, r12, r13 = (u(x, t) for x in network)
-    ib = s["input_bias"]
+    ios = min(s["input_offset_current"], 2 * s["input_bias"])
+    common = rng.uniform(-1, 1, n) * (s["input_bias"] - ios / 2)  # both inputs the same way, differing by <= I_os
+    half = rng.uniform(-ios / 2, ios / 2, n)
     v = (an94002.v_cs_trip(rng.uniform(vz_lo, vz_hi, n), r9, r10, r11, r12, r13, rng.uniform(-s["offset"], s["offset"], n))
-         + rng.uniform(-ib, ib, n) * r12 - rng.uniform(-ib, ib, n) * (r9 + r10) * r11 / (r9 + r10 + r11) * (1 + r12 / r13))
+         + (common + half) * r12 - (common - half) * (r9 + r10) * r11 / (r9 + r10 + r11) * (1 + r12 / r13))
     i = v / u(r7, s["r7_tolerance"])
     ok = (i >= s["i_no_trip"]) & (i <= s["i_must_trip"])
     return {"yield": float(ok.mean()), "i_p001": float(np.quantile(i, 0.001)),

@@ -35,7 +35,18 @@ def best_margin(s: dict) -> float | None:
     return None if res is None else float(res[0][6])
 
 
+def least_divider_current(s: dict) -> float:
+    """The least current any network of the ranges (or pins) draws from the zener node (largest values)."""
+    from .current_limiter import choices
+    return float(net.divider_current(tuple(choices(s, n)[-1] for n in net.DIVIDER), s))
+
+
 def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
+    least = least_divider_current(s)
+    if least > s["divider_current_max"]:
+        return (f"every network draws at least {least * 1e3:.3g} mA from the zener node, more than divider_current_max "
+                f"= {s['divider_current_max'] * 1e3:.3g} mA: allow larger divider resistors (r9_max .. r13_max) or a "
+                f"stronger zener feed", {"divider_current_min": least})
     head = best_headroom(s)
     if head < s["input_headroom"]:
         return (f"no network keeps both op-amp inputs {s['input_headroom']:g} V below the supply: with D1 at its "
@@ -44,11 +55,15 @@ def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
                 f"input_headroom)", {"headroom_max": head})
     margin = best_margin(s)
     if margin is None or margin < s["min_margin"]:
-        shown = "none" if margin is None else f"{margin:.2%}"
-        return (f"no network keeps every corner's trip current inside {s['i_no_trip']:g} .. {s['i_must_trip']:g} A "
-                f"with a {s['min_margin']:.1%} margin: the best worst margin any network reaches is {shown}; lower "
-                f"min_margin to that, widen the window (now i_must_trip / i_no_trip = "
-                f"{s['i_must_trip'] / s['i_no_trip']:.3g}) or use tighter tolerances", {"min_margin_max": margin})
+        start = (f"no network keeps every corner's trip current inside {s['i_no_trip']:g} .. {s['i_must_trip']:g} A "
+                 f"with a {s['min_margin']:.1%} margin: ")
+        if margin is None or margin < 0:
+            return (start + "none keeps it inside the window at all at every corner; widen the window (now "
+                    f"i_must_trip / i_no_trip = {s['i_must_trip'] / s['i_no_trip']:.3g}), use tighter tolerances or "
+                    "free a pinned resistor", {"min_margin_max": margin})
+        return (start + f"the best worst margin any network reaches is {margin:.2%}; lower min_margin to that, widen "
+                f"the window (now i_must_trip / i_no_trip = {s['i_must_trip'] / s['i_no_trip']:.3g}) or use tighter "
+                "tolerances", {"min_margin_max": margin})
     return (f"no {s['r7_series']} R7 within {s['r7_min']:g} .. {s['r7_max']:g} ohm has a series network meeting "
             f"the spec (the continuous relaxation needs R7 >= {(r7_relaxed or float('nan')):.3g} ohm): widen the R7 "
             f"range or use finer series", {"r7_relaxed": r7_relaxed})
@@ -60,7 +75,9 @@ def explain(s: dict, r7_relaxed: float | None):
     message, achievable = _reason(s, r7_relaxed)
     for name in (n for n in ("r7",) + net.DIVIDER if s[n] is not None):
         free = {**s, name: None}
-        if "headroom_max" in achievable:
+        if "divider_current_min" in achievable:
+            lifted = least_divider_current(free) <= s["divider_current_max"]
+        elif "headroom_max" in achievable:
             lifted = best_headroom(free) >= s["input_headroom"]
         else:
             margin = best_margin(free)

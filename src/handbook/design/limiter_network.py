@@ -11,22 +11,34 @@ and the op-amp trips at V_+ - V_- = V_os, so with 1/A = 1 + R12/R13 and B = R11 
 
     V_cs = V_D1 (1 - B/A) + I_+ R12 - (I_- R_m + V_os) / A,    R_m = (R9 + R10) || R11
 
+The bias currents of an op-amp's two inputs flow the same way (out of the LM358's PNP inputs) and differ
+by at most the input offset current I_os: I_+, I_- in [-I_b, I_b] with |I_+ - I_-| <= I_os (either sign,
+so other input stages are covered too). The extremes of a I_+ - b I_- (a = R12, b = R_m/A, both positive)
+over that polygon lie at its vertices: +-(|a - b| I_b + min(a, b) I_os) when I_os <= 2 I_b. Treating the
+two currents as independent instead (+-(a + b) I_b) would charge a design for an error that cancels when
+the two inputs see equal resistances, and push every divider to its smallest resistance.
+
 Why the corners are exact (:func:`corner_proof` checks it with sympy): V_cs, both headrooms and the trip
 current V_cs / R7 are, in each quantity separately, a ratio of two polynomials of degree at most one whose
 denominator is a sum of positive resistances. Such a function is monotone in that quantity over any
 interval, so its extremes over the whole tolerance box lie at a vertex of the box, and enumerating every
-vertex finds them. Here V_D1 takes both ends; V_os, I_+ and I_- enter linearly with coefficients whose
-sign is known (1, R12, R_m/A), so their worst values are written directly; the five resistors take all
-2^5 combinations. No direction of any resistor is assumed: the earlier closed form fixed the high corner at
+vertex finds them (for the two bias currents, the vertices of their polygon). Here V_D1 takes both ends;
+V_os and the bias currents enter linearly, so their worst values are written directly (above); the five
+resistors take all their combinations. No direction of any resistor is assumed: the earlier closed form fixed the high corner at
 (R12-, R13+), which is wrong once V_D1 B + V_os < 0 and let an unsafe design through.
 """
 from __future__ import annotations
 
 import itertools
 
+import casadi as ca
+
 #: the divider resistors, in the order of every tuple here
 DIVIDER = ("r9", "r10", "r11", "r12", "r13")
-CORNERS = tuple(itertools.product((-1, 1), repeat=5))
+#: R9 and R10 enter every expression only through their sum S = R9 + R10, whose extremes over the two
+#: parts' tolerances are S (1 +- t) (both at the same end); so the resistor corners are those of
+#: (S, R11, R12, R13): 2^4, not 2^5 (the oracle in the tests still enumerates all of them)
+CORNERS = tuple(itertools.product((-1, 1), repeat=4))
 
 
 def zener_range(s: dict) -> tuple[float, float]:
@@ -37,36 +49,61 @@ def zener_range(s: dict) -> tuple[float, float]:
 
 
 def _corner(r, signs, t):
-    return tuple(x * (1 + t * g) for x, g in zip(r, signs))
+    """(S, R11, R12, R13) at one corner, S = R9 + R10."""
+    return tuple(x * (1 + t * g) for x, g in zip((r[0] + r[1], *r[2:]), signs))
 
 
-def trip_voltage_corners(r, s: dict, both_ends: bool = True) -> tuple[list, list]:
-    """(lows, highs): V_cs at its lowest and highest for each of the 32 resistor corners and both zener
-    ends (64 each), the offset and both bias currents at their worst. ``r`` = (R9, R10, R11, R12, R13),
+def trip_voltage_corners(r, s: dict, relaxed: bool = False) -> tuple[list, list]:
+    """(lows, highs): V_cs at its lowest and highest for each of the 16 resistor corners and both zener
+    ends (32 each), the offset and both bias currents at their worst. ``r`` = (R9, R10, R11, R12, R13),
     floats, numpy arrays or casadi symbols. The lowest trip voltage is min(lows), the highest max(highs).
 
-    ``both_ends=False`` keeps only the lowest zener voltage in ``lows`` and the highest in ``highs``: the
-    others matter only where 1 - B/A <= 0, and there V_cs is negative at that corner, which the lower trip
-    limit refuses anyway (the relaxation uses this; the exact check keeps both)."""
+    ``relaxed`` (the smooth form the solver gets, the same feasible set): only the lowest zener voltage in
+    ``lows`` and the highest in ``highs`` (the others matter only where 1 - B/A <= 0, where V_cs is negative
+    at that corner, which the lower trip limit refuses anyway), and the bias error's |a - b| I_b +
+    min(a, b) I_os written as the larger of its two smooth branches, a I_b - b (I_b - I_os) and
+    b I_b - a (I_b - I_os), each its own entry (a bound on a maximum is a bound on each branch)."""
     vz_lo, vz_hi = zener_range(s)
     ib, off, t = s["input_bias"], s["offset"], s["resistor_tolerance"]
+    ios = s["input_offset_current"] if isinstance(ib, ca.SX) else min(s["input_offset_current"], 2 * ib)
     lows, highs = [], []
     for signs in CORNERS:
-        r9, r10, r11, r12, r13 = _corner(r, signs, t)
+        s910, r11, r12, r13 = _corner(r, signs, t)
         inv_a = 1 + r12 / r13
-        b = r11 / (r9 + r10 + r11)
-        r_m = (r9 + r10) * b
+        b = r11 / (s910 + r11)
+        r_m = s910 * b
         k = 1 - b * inv_a
-        err = ib * r12 + (ib * r_m + off) * inv_a
-        for vz in (vz_lo, vz_hi) if both_ends else (None,):
-            lows.append((vz_lo if vz is None else vz) * k - err)
-            highs.append((vz_hi if vz is None else vz) * k + err)
+        a_p, a_m = r12, r_m * inv_a
+        if relaxed:
+            for err in (a_p * ib - a_m * (ib - ios), a_m * ib - a_p * (ib - ios)):
+                lows.append(vz_lo * k - off * inv_a - err)
+                highs.append(vz_hi * k + off * inv_a + err)
+            continue
+        err = off * inv_a + bias_error(a_p, a_m, ib, ios)
+        for vz in (vz_lo, vz_hi):
+            lows.append(vz * k - err)
+            highs.append(vz * k + err)
     return lows, highs
+
+
+def bias_error(a, b, ib: float, ios: float):
+    """The largest |a I_+ - b I_-| over the bias currents' polygon (a, b > 0): |a - b| I_b + min(a, b) I_os.
+    Floats, numpy arrays or casadi symbols (abs is casadi's fabs)."""
+    d = abs(a - b)
+    return d * ib + (a + b - d) / 2 * ios
+
+
+def divider_current(r, s: dict):
+    """The most current both dividers draw from the zener node: the highest zener voltage over the smallest
+    resistances (R9 + R10 + R11 and R12 + R13 at their lower tolerance ends; decreasing in each)."""
+    _, vz_hi = zener_range(s)
+    r9, r10, r11, r12, r13 = r
+    return vz_hi / ((r9 + r10 + r11) * (1 - s["resistor_tolerance"])) + vz_hi / ((r12 + r13) * (1 - s["resistor_tolerance"]))
 
 
 def headroom_corners(r, s: dict) -> list:
     """How far each op-amp input sits below the supply, at every corner (V_cs = 0 for V_+, where it is
-    nearest the supply; V_- does not depend on V_cs): 4 corners of (R12, R13), 8 of (R9, R10, R11), the
+    nearest the supply; V_- does not depend on V_cs): 4 corners of (R12, R13), 4 of (R9 + R10, R11), the
     lowest zener voltage and the bias current pushing each input up."""
     vz_lo, _ = zener_range(s)
     ib, t = s["input_bias"], s["resistor_tolerance"]
@@ -75,8 +112,8 @@ def headroom_corners(r, s: dict) -> list:
     for g12, g13 in itertools.product((-1, 1), repeat=2):
         a12, a13 = r12 * (1 + t * g12), r13 * (1 + t * g13)
         out.append((vz_lo * a12 - ib * a12 * a13) / (a12 + a13))
-    for g9, g10, g11 in itertools.product((-1, 1), repeat=3):
-        upper, a11 = (r9 * (1 + t * g9) + r10 * (1 + t * g10)), r11 * (1 + t * g11)
+    for g9, g11 in itertools.product((-1, 1), repeat=2):  # R9 + R10 as one (see CORNERS)
+        upper, a11 = (r9 + r10) * (1 + t * g9), r11 * (1 + t * g11)
         out.append(upper * (vz_lo - ib * a11) / (upper + a11))
     return out
 
@@ -97,9 +134,11 @@ def verify(r7, r, s: dict) -> dict:
     i_lo, i_hi = trip_currents(r7, r, s)
     m_lo, m_hi = i_lo / s["i_no_trip"] - 1, 1 - i_hi / s["i_must_trip"]
     headroom = np.min(np.stack(headroom_corners(r, s)), axis=0)
-    ok = (np.minimum(m_lo, m_hi) >= s["min_margin"] - 1e-12) & (headroom >= s["input_headroom"] - 1e-12) & (i_lo > 0)
+    i_div = divider_current(r, s)
+    ok = ((np.minimum(m_lo, m_hi) >= s["min_margin"] - 1e-12) & (headroom >= s["input_headroom"] - 1e-12) & (i_lo > 0)
+          & (i_div <= s["divider_current_max"] * (1 + 1e-12)))
     return {"i_trip_min": i_lo, "i_trip_max": i_hi, "margin_low": m_lo, "margin_high": m_hi,
-            "headroom_min": headroom, "ok": ok}
+            "headroom_min": headroom, "divider_current": i_div, "ok": ok}
 
 
 def corner_proof() -> dict:
