@@ -7,7 +7,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: book test test-unit test-notebooks notebooks browser clean
+.PHONY: book test test-unit test-notebooks notebooks system clean
 
 $(STAMP): requirements.txt constraints.txt pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -25,7 +25,7 @@ book: $(STAMP)
 
 # Unit tests and notebooks run side by side (one core each), each pytest's output kept together.
 # The notebooks (nbval, one kernel per notebook) run in one process, in order.
-test: $(STAMP) browser
+test: $(STAMP) system
 	$(MAKE) --no-print-directory -j2 --output-sync=target test-unit test-notebooks
 
 test-unit: $(STAMP)
@@ -34,15 +34,18 @@ test-unit: $(STAMP)
 test-notebooks: $(STAMP)
 	$(BIN)/python -m pytest book
 
-# The browser check (tests/test_browser.py) needs Debian's chromium; install it where the machine allows
-# (root with apt-get), otherwise that check reports itself skipped. No browser is downloaded.
-browser:
-	@command -v chromium >/dev/null 2>&1 || { \
+# The browser check (tests/test_browser.py) needs Debian's chromium and the SPICE checks Debian's ngspice;
+# install them where the machine allows (root with apt-get), otherwise those checks report themselves
+# skipped and say why. No browser or simulator is downloaded from anywhere else.
+system:
+	@missing=""; for p in chromium ngspice; do command -v $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    echo "installing Debian's chromium for the browser check"; \
-	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium) >/dev/null 2>&1 \
-	      || echo "could not install chromium: the browser check will be skipped"; \
-	  else echo "no chromium, and apt-get is not available as root: the browser check will be skipped"; fi; }
+	    echo "installing Debian's$$missing"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing) >/dev/null 2>&1 \
+	      || echo "could not install$$missing: the checks that need it will be skipped"; \
+	  else echo "missing$$missing, and apt-get is not available as root: the checks that need it will be skipped"; fi; \
+	fi
 
 # Re-execute every chapter in place after a change to src/handbook (nbval compares these outputs).
 notebooks: $(STAMP)

@@ -74,26 +74,32 @@ def enumerate_cap_ti(spec):
 
 
 def limiter_corners(r7, network, s):
-    """Every corner of the op-amp limiter, 2^10 of them (R7, R9..R13, zener end, offset and both bias
-    currents at either sign), written from the node equations: V_+ = Z + (V_D1 - V_cs) R13/(R12 + R13)
+    """Every corner of the op-amp limiter (R7, R9..R13 at either end, the zener at either end, the offset at
+    either sign, and the two bias currents at every vertex of their polygon: both the same way, within
+    I_os of each other), written from the node equations: V_+ = Z + (V_D1 - V_cs) R13/(R12 + R13)
     + I_p R12||R13 and V_- = Z + V_D1 R11/(R9 + R10 + R11) + I_m (R9 + R10)||R11 meet at V_+ - V_- = V_os.
     ``network`` = (R9, R10, R11, R12, R13), each a float or an array (networks side by side).
-    Returns (lowest trip current, highest trip current, least headroom of the two inputs), all exact."""
+    Returns (lowest trip current, highest trip current, least headroom of the two inputs, most current
+    both dividers draw from the zener node), all exact."""
     t, ib = s["resistor_tolerance"], s["input_bias"]
+    ios = min(s["input_offset_current"], 2 * ib)
     vz0, dz = s["zener_voltage"], s["zener_voltage"] * s["zener_tolerance"] + s["zener_tc"] * s["temp_span"]
+    biases = [(sg * ib, sg * ib) for sg in (-1, 1)] + [(sg * ib, sg * (ib - ios)) for sg in (-1, 1)] + [
+        (sg * (ib - ios), sg * ib) for sg in (-1, 1)]
     net = [np.asarray(x, dtype=float) for x in network]
     i_lo = np.full(np.broadcast(*net).shape, np.inf)
-    i_hi, head = -i_lo, i_lo.copy()
+    i_hi, head, i_div = -i_lo, i_lo.copy(), -i_lo
     for sg in itertools.product((-1.0, 1.0), repeat=5):
         r9, r10, r11, r12, r13 = (x * (1 + t * g) for x, g in zip(net, sg))
         a = r13 / (r12 + r13)
         r_plus, r_minus = r12 * r13 / (r12 + r13), (r9 + r10) * r11 / (r9 + r10 + r11)
-        for vz, vos, i_p, i_m in itertools.product((vz0 - dz, vz0 + dz), (-s["offset"], s["offset"]), (-ib, ib), (-ib, ib)):
+        for vz, vos, (i_p, i_m) in itertools.product((vz0 - dz, vz0 + dz), (-s["offset"], s["offset"]), biases):
             v_cs = vz - (vz * r11 / (r9 + r10 + r11) + i_m * r_minus - i_p * r_plus + vos) / a
             for r7_ in (r7 * (1 - s["r7_tolerance"]), r7 * (1 + s["r7_tolerance"])):
                 i_lo, i_hi = np.minimum(i_lo, v_cs / r7_), np.maximum(i_hi, v_cs / r7_)
             head = np.minimum(head, np.minimum(vz - vz * a - i_p * r_plus, vz - vz * r11 / (r9 + r10 + r11) - i_m * r_minus))
-    return i_lo, i_hi, head
+            i_div = np.maximum(i_div, vz / (r9 + r10 + r11) + vz / (r12 + r13))
+    return i_lo, i_hi, head, i_div
 
 
 def enumerate_limiter(spec):
@@ -103,11 +109,12 @@ def enumerate_limiter(spec):
     lists = [[s[n]] if s.get(n) is not None else series.values(s[n + "_series"], s[n + "_min"], s[n + "_max"])
              for n in ("r7", "r9", "r10", "r11", "r12", "r13")]
     grid = np.array(np.meshgrid(*lists[1:], indexing="ij")).reshape(5, -1)
-    lo, hi, head = limiter_corners(1.0, grid, s)  # trip currents scale as 1/R7
+    lo, hi, head, i_div = limiter_corners(1.0, grid, s)  # trip currents scale as 1/R7
     best = None
     for r7 in lists[0]:
         worst = np.minimum(lo / r7 / s["i_no_trip"] - 1, 1 - hi / r7 / s["i_must_trip"])
-        ok = (worst >= s["min_margin"] - 1e-12) & (head >= s["input_headroom"] - 1e-12) & (lo > 0)
+        ok = ((worst >= s["min_margin"] - 1e-12) & (head >= s["input_headroom"] - 1e-12) & (lo > 0)
+              & (i_div <= s["divider_current_max"] * (1 + 1e-12)))
         if ok.any():
             j = int(np.argmax(np.where(ok, worst, -np.inf)))
             best = (r7, tuple(float(x) for x in grid[:, j]), float(worst[j]))
@@ -154,9 +161,26 @@ def _band_ok(s, L, C):
     return (dev <= s["droop_max"] * (1 + 1e-9)) & (q <= s["q_max"] * (1 + 1e-9))
 
 
+def _peak_inside_box_ok(s, L, C):
+    """The largest |H| over 0..f_audio and the whole tolerance box, per nominal (L, C): with y = w^2,
+    |H|^-2 = 1 + y (4 L^2/R^2 - 4 L C) + 4 L^2 C^2 y^2, a parabola in y minimised in closed form on
+    [0, w_audio^2]; C y appears only as a product beside y alone, so the largest C is the worst (any
+    (C, y) does no better than (C_max, C y / C_max)); L is swept over its tolerance on 401 points."""
+    y_top, r = (2 * np.pi * s["f_audio"]) ** 2, s["r_load"]
+    c = C * (1 + s["c_tolerance"])
+    least = np.full(np.shape(L), np.inf)
+    for k in np.linspace(1 - s["l_tolerance"], 1 + s["l_tolerance"], 401):
+        lk = L * k
+        lin, quad = 4 * lk ** 2 / r ** 2 - 4 * lk * c, 4 * lk ** 2 * c ** 2
+        y = np.clip(-lin / (2 * quad), 0, y_top)
+        least = np.minimum(least, 1 + lin * y + quad * y * y)
+    return -10 * np.log10(least) <= s["droop_max"] * (1 + 1e-9)
+
+
 def enumerate_class_d(spec):
-    """Every series R_OSC x L x C_BYP at all eight corners (oscillator -20 %/+23.5 %, L and C +-tolerance):
-    the best feasible (R_OSC, L, C, R_DLY), or None. Written from the datasheet's numbers alone."""
+    """Every series R_OSC x L x C_BYP at all eight corners (oscillator -20 %/+23.5 %, L and C +-tolerance),
+    the filter's peaking over the whole L, C box: the best feasible (R_OSC, L, C, R_DLY), or None. Written
+    from the datasheet's numbers alone (THD+N: 0.3 % at 10 W in a 10 Hz..80 kHz band)."""
     s = {**defaults("class_d"), **spec}
     r_dly = next(r for r in [0.0] + series.values(s["r_dly_series"], 1, 1e6)
                  if 27e-9 + 1.7e-12 * r >= s["dead_time_min"] * (1 - 1e-12))
@@ -175,6 +199,9 @@ def enumerate_class_d(spec):
         thd = 0.003 * (125e3 / fc) ** 2 * (250e-12 / (lc * cc)) * v / 20 * np.sqrt(40 / (s["thd_test_power"] * rl))
         h = np.abs(1 / (1 + 1j * w * 2 * lc / rl - w ** 2 * 2 * lc * cc))
         ripple = 4 * 2 * v / np.pi * h / np.sqrt(2)
+        # an analyser whose band (brick wall) reaches the switching fundamental reads the ripple too
+        in_band = np.where(fc < s["thd_bandwidth"], ripple / np.sqrt(s["thd_test_power"] * rl), 0.0)
+        thd = np.sqrt(thd ** 2 + in_band ** 2)
         v_pk = np.sqrt(2 * rl * p_clip(fc, rl, v))
         i_pk = v_pk * np.hypot(1 / rl, 2 * np.pi * s["f_audio"] * cc) + v / (4 * lc * fc)
         ok &= (thd <= s["thd_max"] * (1 + 1e-9)) & (ripple <= s["ripple_max"] * (1 + 1e-9))
@@ -182,9 +209,11 @@ def enumerate_class_d(spec):
     for sl, sc in itertools.product((-1, 1), (-1, 1)):  # the filter alone: on the (L, C) plane
         l2, c2 = np.meshgrid(ls * (1 + sl * s["l_tolerance"]), cs * (1 + sc * s["c_tolerance"]), indexing="ij")
         ok &= _band_ok(s, l2, c2)[None]
+    ok &= _peak_inside_box_ok(s, *np.meshgrid(ls, cs, indexing="ij"))[None]
     theta = np.minimum(_class_d_heat(s, F * slow), _class_d_heat(s, F * fast))
     sink = 0.0 if s["theta_sa_available"] is None else s["theta_sa_available"]
-    ok &= (p_clip(F * fast, rl, v) >= s["p_out"] * (1 - 1e-9)) & (theta >= sink * (1 + 1e-9) - 1e-12)
+    unclipped = max(s["p_out"], s["thd_test_power"])  # the THD+N test point must not clip either
+    ok &= (p_clip(F * fast, rl, v) >= unclipped * (1 - 1e-9)) & (theta >= sink * (1 + 1e-9) - 1e-12)
     p = s["p_out"]
     x = (25e-9 + 26e-9 + 310e-9) * F
     x5 = (25e-9 + 26e-9 + 310e-9) * 125e3

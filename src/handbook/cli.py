@@ -51,6 +51,12 @@ def cmd_design(args) -> int:
 
     try:
         spec = specmod.load(args.spec)
+        if args.spice:
+            from .spice import runner
+
+            if runner.available() is None:
+                print(f"error: --spice: {runner.why_unavailable()}", file=sys.stderr)
+                return 4
         result = specmod.run(spec)
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
@@ -63,6 +69,15 @@ def cmd_design(args) -> int:
                              indent=1, default=float))
         return 3
     out = specmod.summary(result)
+    if args.spice:
+        from .spice import checks as spice
+
+        try:
+            for table, figures in spice.confirm(result).items():
+                out[table]["spice"] = figures
+        except (spice.SpiceUnavailable, spice.SpiceError) as exc:
+            print(f"error: --spice: {exc}", file=sys.stderr)
+            return 4
     if args.bom:
         try:
             bom.write(bom.rows(result), args.bom)
@@ -82,6 +97,26 @@ def cmd_design(args) -> int:
     return 0
 
 
+def cmd_spice(args) -> int:
+    from .spice import checks as spice
+
+    try:
+        rows = spice.rows()
+    except (spice.SpiceUnavailable, spice.SpiceError) as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 4
+    keys = ("id", "circuit", "quantity", "unit", "equation", "spice", "rel_diff", "agrees")
+    if args.json:
+        print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
+    else:
+        from .report.tables import eng
+
+        for r in rows:
+            print(f"{r['id']:34s} {r['quantity'][:38]:38s} {eng(r['equation'], r['unit']):>12s} "
+                  f"{eng(r['spice'], r['unit']):>12s} {r['rel_diff']:8.2%}  {'agrees' if r['agrees'] else 'DIFFERS'}")
+    return 0 if all(r["agrees"] for r in rows) else 1
+
+
 def _spec_help() -> str:
     """The specification's keys, from the one schema (handbook.design.schema)."""
     from .design.schema import key_rows
@@ -93,7 +128,8 @@ def _spec_help() -> str:
             lines.append(f"  [{t}]")
             table = t
         lines.append(f"    {key} = {default}  ({unit + ', ' if unit not in ('', '1') else ''}{meaning})")
-    lines.append("exit codes: 0 designed, 2 invalid input, 3 a valid spec nothing can meet")
+    lines.append("exit codes: 0 designed, 2 invalid input, 3 a valid spec nothing can meet, 4 --spice could not simulate "
+                 "(ngspice missing or a netlist it refused)")
     return "\n".join(lines)
 
 
@@ -111,7 +147,12 @@ def main(argv=None) -> int:
     p.add_argument("spec", help="TOML file with optional [commutation], [current_limiter], [class_d] tables")
     p.add_argument("--json", action="store_true", help="one JSON object, SI units")
     p.add_argument("--bom", metavar="FILE.csv", help="also write a bill of materials (written only on success)")
+    p.add_argument("--spice", action="store_true",
+                   help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
     p.set_defaults(func=cmd_design)
+    p = sub.add_parser("spice", help="every circuit's SPICE checks: equation against ngspice")
+    p.add_argument("--json", action="store_true", help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, agrees")
+    p.set_defaults(func=cmd_spice)
     args = parser.parse_args(argv)
     return args.func(args)
 

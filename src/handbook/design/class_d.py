@@ -4,9 +4,11 @@ heat sink, chosen together.
 Problem. Choose R_OSC (``r_osc_series``), L (``l_series``) and C_BYP (``c_series``) to maximise the
 efficiency at p_out (``objective = "efficiency"``) or the heat sink's allowed theta_SA (``"heat_sink"``),
 subject at the worst of eight tolerance corners (oscillator slow/fast from eq 5 against the datasheet
-table, L and C each +-tolerance; :mod:`~handbook.design.class_d_model`) to: THD+N at ``thd_test_power``;
-no clipping at p_out; the switching residue at the load; the loaded filter flat across the audio band and
-its Q; the inductor's peak current below its saturation and the 10 A limit; the oscillator inside
+table, L and C each +-tolerance; :mod:`~handbook.design.class_d_model`) to: THD+N at ``thd_test_power`` as
+the analyser reads it (the switching residue added when an oscillator corner lies inside its
+``thd_bandwidth``); no clipping at p_out (nor at the test point); the switching residue at the load; the
+loaded filter flat across the audio band over the whole L, C tolerance box (exact, not only its corners)
+and its Q; the inductor's peak current below its saturation and the 10 A limit; the oscillator inside
 50..225 kHz; and the junction at T_jmax - tj_margin with R_DS(on) maximum at temperature, carrying
 p_continuous. R_DLY is closed form and exact: the smallest series value whose dead time meets
 ``dead_time_min`` (the datasheet: more dead time only costs THD).
@@ -16,8 +18,10 @@ bound L C and C / L) and against the losses (switching grows with f, the coils' 
 solves that continuous problem (:func:`solve`, every constraint at every corner). :func:`snap` takes the
 best series design near its optimum and then certifies it exactly: both objectives depend on R_OSC and L
 alone, so every (R_OSC, L) pair at least as good is searched with every C_BYP, and nothing outside can
-win. :func:`enumerate_series` is the exhaustive check over the whole grid (the tests carry their own,
-written independently). The oscillator corners, L and C corners are enumerated (8), never assumed.
+win. THD+N jumps where the slow corner crosses the analyser's band, so IPOPT solves each side (two
+smooth NLPs) and both seed the snap; the certificate does not depend on them. :func:`enumerate_series`
+is the exhaustive check over the whole grid (the tests carry their own, written independently). The
+oscillator corners, L and C corners are enumerated (8), never assumed.
 """
 from __future__ import annotations
 
@@ -58,6 +62,7 @@ class ClassDResult(Result):
     p_dissipation: float
     theta_sa_required: float
     t_junction: float
+    t_junction_no_sink: float
     thd_n: float
     p_clip: float
     binding: str
@@ -94,7 +99,8 @@ def _params(s: dict) -> list[float]:
          "tol_l": s["l_tolerance"], "tol_c": s["c_tolerance"], "f_audio": s["f_audio"],
          "g_band": 10 ** (s["droop_max"] / 10), "q_max": s["q_max"], "ripple_max": s["ripple_max"],
          "i_max": min(s["i_sat"], lm4651.I_LIMIT), "dcr": s["l_dcr"], "t_target": DEV["tj_max"] - s["tj_margin"],
-         "rds25": s["rds_on_25"], "t_om": s["t_overmod"]}
+         "rds25": s["rds_on_25"], "t_om": s["t_overmod"], "band": s["thd_bandwidth"],
+         "p_need": model.p_unclipped(s)}
     return [p[n] for n in NAMES]
 
 
@@ -106,39 +112,53 @@ def _theta_needed(f, P):
     return (P["t_target"] - P["t_a"]) / watts - P["path"]
 
 
-def _constraints(f, l_out, c_out, P) -> list[tuple[str, object, float, float]]:
-    """Every constraint at every corner, scaled to order one (the symbolic twin of class_d_model.figures)."""
+def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, float, float]]:
+    """Every constraint at every corner, scaled to order one (the symbolic twin of class_d_model.figures).
+
+    THD+N jumps where an oscillator corner crosses the analyser's band, so the NLP is solved on each side
+    of it, both smooth: ``above`` holds the slowest corner above the band (distortion alone), else the
+    residue is counted at every corner (at a corner above the band that is conservative)."""
     out = [("oscillator range", f * (1 - P["tol_slow"]) / DEV["f_min"], 1.0, ca.inf),
            ("oscillator range", f * (1 + P["tol_fast"]) / DEV["f_max"], -ca.inf, 1.0)]
+    if above:
+        out.append(("analyser band", f * (1 - P["tol_slow"]) / P["band"], 1.0, ca.inf))
     rl, vs = P["r_load"], P["supply"]
     for so, sl, sc in model.CORNERS:
         fc = f * (1 - P["tol_slow"] if so < 0 else 1 + P["tol_fast"])
         lc, cc = l_out * (1 + sl * P["tol_l"]), c_out * (1 + sc * P["tol_c"])
-        out += [("THD+N", lm4651.thd_n_joint(fc, lc, cc, P["p_test"], rl, vs) / P["thd_max"], -ca.inf, 1.0),
+        thd = lm4651.thd_n_joint(fc, lc, cc, P["p_test"], rl, vs)
+        if not above:
+            thd = (thd ** 2 + lm4651.residue_fraction(fc, lc, cc, P["p_test"], rl, vs) ** 2) ** 0.5
+        out += [("THD+N", thd / P["thd_max"], -ca.inf, 1.0),
                 ("ripple", lm4651.ripple_rms(fc, lc, cc, rl, vs) / P["ripple_max"], -ca.inf, 1.0),
                 ("audio band", lm4651.filter_gain2(P["f_audio"], lc, cc, rl) / P["g_band"], -ca.inf, 1.0),
                 ("audio band", lm4651.filter_gain2(P["f_audio"], lc, cc, rl) * P["g_band"], 1.0, ca.inf),
                 ("filter Q", lm4651.filter_q(lc, cc, rl) / P["q_max"], -ca.inf, 1.0),
                 ("inductor peak", lm4651.inductor_peak(fc, lc, cc, lm4651.v_clip_peak(fc, rl, vs), rl, vs,
                                                        P["f_audio"]) / P["i_max"], -ca.inf, 1.0)]
+    c_hi = c_out * (1 + P["tol_c"])  # the box's worst in-band peaking (class_d_model.band_deviation_box_db)
+    l_star = ca.fmin(ca.fmax(lm4651.filter_worst_peak_l(P["f_audio"], c_hi, rl), l_out * (1 - P["tol_l"])),
+                     l_out * (1 + P["tol_l"]))
+    out.append(("audio band", lm4651.filter_gain2(P["f_audio"], l_star, c_hi, rl) / P["g_band"], -ca.inf, 1.0))
     fast = f * (1 + P["tol_fast"])
-    out.append(("clipping", lm4651.p_clip(fast, rl, vs) / P["p_out"], 1.0, ca.inf))
+    out.append(("clipping", lm4651.p_clip(fast, rl, vs) / P["p_need"], 1.0, ca.inf))
     return out
 
 
 NAMES = ("p_out", "r_load", "supply", "t_a", "path", "sink", "thd_max", "p_test", "w_cont", "p_cont", "tol_slow",
          "tol_fast", "tol_l", "tol_c", "f_audio", "g_band", "q_max", "ripple_max", "i_max", "dcr", "t_target",
-         "rds25", "t_om")
+         "rds25", "t_om", "band", "p_need")
 
 
 @functools.lru_cache(maxsize=4)
-def _nlp(objective: str):
-    """The NLP, built once per objective with the spec as parameters (x: f, L, C scaled; t: theta_SA)."""
+def _nlp(objective: str, above: bool):
+    """The NLP, built once per objective and side of the analyser's band with the spec as parameters (x: f, L,
+    C scaled; t: theta_SA)."""
     x = ca.SX.sym("x", 4)
     p = ca.SX.sym("p", len(NAMES))
     P = {n: p[i] for i, n in enumerate(NAMES)}
     f, l_out, c_out, t = x[0] * F_S, x[1] * L_S, x[2] * C_S, x[3]
-    cons = _constraints(f, l_out, c_out, P)
+    cons = _constraints(f, l_out, c_out, P, above)
     for so in (-1, 1):
         fc = f * (1 - P["tol_slow"] if so < 0 else 1 + P["tol_fast"])
         theta = _theta_needed(fc, P)
@@ -146,34 +166,39 @@ def _nlp(objective: str):
     loss = (lm4651.p_switch(f, P["p_out"]) + lm4651.coil_loss(P["p_out"], P["r_load"], l_out, P["dcr"])) / P["p_out"]
     obj = loss if objective == "efficiency" else -t + 1e-3 * loss
     g = ca.vertcat(*[c[1] for c in cons])
-    solver = ca.nlpsol(f"class_d_{objective}", "ipopt", {"x": x, "p": p, "f": obj, "g": g}, IPOPT_OPTIONS)
+    solver = ca.nlpsol(f"class_d_{objective}_{above}", "ipopt", {"x": x, "p": p, "f": obj, "g": g},
+                       {**IPOPT_OPTIONS, "ipopt.max_iter": 300})
     return solver, [c[0] for c in cons], [c[2] for c in cons], [c[3] for c in cons]
 
 
-def solve(s: dict) -> Solution:
-    """IPOPT on the continuous problem: (f_sw, L, C) as reals, every constraint at every corner."""
-    solver, names, lbg, ubg = _nlp(s["objective"])
+def solve(s: dict) -> list[Solution]:
+    """IPOPT on the continuous problem: (f_sw, L, C) as reals, every constraint at every corner, on each side
+    of the analyser's band: both solutions, the better solved one first."""
     f_lo = DEV["f_min"] / (1 - s["osc_tol_slow"])
     f_hi = DEV["f_max"] / (1 + s["osc_tol_fast"])
     x0 = [math.sqrt(f_lo * max(f_hi, f_lo)) / F_S, 50e-6 / L_S, 5e-6 / C_S, 0.0]
     lbx = [DEV["f_min"] / F_S, L_RANGE[0] / L_S, C_RANGE[0] / C_S, -100.0]
     ubx = [DEV["f_max"] / F_S, L_RANGE[1] / L_S, C_RANGE[1] / C_S, 100.0]
-    r = solver(x0=x0, p=_params(s), lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg)
-    x = np.array(r["x"]).ravel()
-    lam = np.array(r["lam_g"]).ravel()
-    return Solution(x * [F_S, L_S, C_S, 1.0], lam, names, bool(solver.stats()["success"]))
+    found = []
+    for above in (False, True):
+        solver, names, lbg, ubg = _nlp(s["objective"], above)
+        r = solver(x0=x0, p=_params(s), lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg)
+        x = np.array(r["x"]).ravel() * [F_S, L_S, C_S, 1.0]
+        sol = Solution(x, np.array(r["lam_g"]).ravel(), names, bool(solver.stats()["success"]))
+        found.append((not sol.success, float(r["f"]), above, sol))
+    return [c[3] for c in sorted(found, key=lambda c: c[:3])]
 
 
-def snap(s: dict, x: np.ndarray, r_dly: float):
-    """The best series (R_OSC, L, C_BYP), exactly, from IPOPT's (f, L, C).
+def snap(s: dict, seeds, r_dly: float):
+    """The best series (R_OSC, L, C_BYP), exactly, from IPOPT's (f, L, C) on each side of the band (seeds).
 
-    First the best within a factor SPREAD of IPOPT's optimum (the incumbent); then every (R_OSC, L) pair
+    First the best within a factor SPREAD of either optimum (the incumbent); then every (R_OSC, L) pair
     whose objective is at least the incumbent's (both objectives are set by R_OSC and L alone) with every
     C_BYP: nothing outside that set can beat the incumbent, so the best inside it is the optimum. IPOPT only
     makes the set small. Returns (parts or None, their figures, the figures of the last set searched).
     """
-    wins = [(v / SPREAD, v * SPREAD) for v in x[:3]]
-    r, l_out, c_out = grid(s, r_dly, *wins)
+    near = [grid(s, r_dly, *[(v / SPREAD, v * SPREAD) for v in x[:3]]) for x in seeds]
+    r, l_out, c_out = (np.concatenate(a) for a in zip(*near))
     i, fig = best(s, r, l_out, c_out, r_dly) if r.size else (None, None)
     rs, ls, cs = model.axes(s, r_dly)
     R, L = (a.ravel() for a in np.meshgrid(rs, ls, indexing="ij"))
@@ -203,15 +228,20 @@ def design(spec: dict | None = None) -> ClassDResult:
     """The joint design: IPOPT for (f_sw, L, C), snapped to the series and re-verified at every corner."""
     s = checked(spec)
     r_dly = r_dly_for(s)
-    sol = solve(s)
-    parts, fig, searched = snap(s, sol.x, r_dly)
+    sols = solve(s)
+    parts, fig, searched = snap(s, [sol.x for sol in sols], r_dly)
     if parts is None:
         infeasible(s, r_dly, searched)  # with no incumbent the set searched was the whole grid
     r_osc, l_out, c_out = (float(v) for v in parts)
+    # the binding constraints of the continuous optimum on the series design's side of the band
+    above = fig["f_sw_min"] >= s["thd_bandwidth"]
+    sol = next((x for x in sols if ("analyser band" in x.names) == above), sols[0])
     return ClassDResult(
         spec=s, f_sw=fig["f_sw"], f_sw_min=fig["f_sw_min"], f_sw_max=fig["f_sw_max"], r_osc=r_osc, r_dly=r_dly,
         l_out=l_out, c_out=c_out, efficiency=fig["efficiency"], p_dissipation=fig["p_dissipation"],
-        theta_sa_required=fig["theta_sa_required"], t_junction=fig["t_junction"], thd_n=fig["thd_n"],
+        theta_sa_required=fig["theta_sa_required"], t_junction=fig["t_junction"],
+        t_junction_no_sink=fig["t_junction_no_sink"],
+        thd_n=fig["thd_n"],
         p_clip=fig["p_clip"], binding=binding_text(sol, fig), warnings=warnings(s, fig, l_out, c_out),
         figures=fig, continuous=(float(sol.x[0]), float(sol.x[1]), float(sol.x[2])),
         band=(fig["f_sw_min"], fig["f_sw_max"]))

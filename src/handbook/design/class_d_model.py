@@ -3,9 +3,10 @@
 The corners are enumerated, never assumed: the oscillator at eq 5 x (1 - osc_tol_slow) and x (1 +
 osc_tol_fast), L and C each at +- their tolerance (2 x 2 x 2 = 8 corners), and the LM4652 at its maximum
 R_DS(on) at the junction temperature and the Example Design's 350 ns over-modulation time. Every
-constraint takes its worst corner. The functions broadcast over numpy arrays of candidates (a corner
-axis is added last), so the solver's snap, the exhaustive enumeration and the plots share one
-evaluator. The models themselves are in :mod:`handbook.sources.lm4651.circuit`.
+constraint takes its worst corner; the filter's band check takes its true worst over the whole L, C box
+(:func:`band_deviation_box_db`), since peaking can be worst between corners. The functions broadcast
+over numpy arrays of candidates (a corner axis is added last), so the solver's snap, the exhaustive
+enumeration and the plots share one evaluator. The models themselves are in :mod:`handbook.sources.lm4651.circuit`.
 """
 from __future__ import annotations
 
@@ -46,12 +47,34 @@ def band_deviation_db(f_audio, l_out, c_out, r_load):
     return 10 * np.log10(np.maximum(g_max, 1 / g_min))
 
 
-def heat(s: dict, f, theta_sa=None):
+def band_deviation_box_db(s: dict, l_out, c_out):
+    """Largest deviation of |H| from 0 dB over 0..f_audio and over the whole tolerance box of L and C, exact.
+
+    Droop: |H(f)|^-2 is a convex quadratic in f^2, in L and in C separately, so its largest value over the
+    band and the box is at f_audio and a corner of the box. Peaking can lie inside the box (up to 3.7 dB
+    above every corner, by a brute-force sweep): |H|^-2 = (1 - 2 L p)^2 + (2 L / R_L)^2 w^2 with p = C w^2,
+    so at any p the largest C (the smallest w) gives the most gain: C = C (1 + tol) always binds.
+    Along that edge the in-band maximum is at L* of :func:`~handbook.sources.lm4651.circuit.filter_worst_peak_l`
+    clipped to the box (below L* the gain at f_audio climbs to it; above L*, it falls, and once the peak
+    enters the band the peak falls with Q). So: the four corners and that one point.
+    """
+    rl, fa = s["r_load"], s["f_audio"]
+    tl, c_hi = s["l_tolerance"], c_out * (1 + s["c_tolerance"])
+    l_star = np.clip(lm4651.filter_worst_peak_l(fa, c_hi, rl), l_out * (1 - tl), l_out * (1 + tl))
+    corners = [band_deviation_db(fa, l_out * (1 + sl * tl), c_out * (1 + sc * s["c_tolerance"]), rl)
+               for sl in (-1, 1) for sc in (-1, 1)]
+    return np.maximum(np.max(corners, axis=0), band_deviation_db(fa, l_star, c_hi, rl))
+
+
+def heat(s: dict, f, theta_sa=None, bare=False):
     """(theta_SA needed, T_j with theta_SA, LM4652 dissipation at that T_j) at oscillator frequency f.
 
     The LM4652 carries p_continuous (default: the clipping power at f, all the amplifier can deliver), eq 9
     and 10 with the 350 ns over-modulation time, conduction with R_DS(on) maximum at T_j, and its idle
-    share. P(T_j) is linear in T_j, so T_j = (T_a + theta P0) / (1 - theta k) exactly.
+    share. P(T_j) is linear in T_j, so T_j = (T_a + theta P0) / (1 - theta k) exactly (inf: no steady
+    state). ``bare``: no heat sink, the package alone at the thermal table's theta_JA; where that steady
+    state would pass T_jmax (or there is none) the shutdown trips, and T_j reads T_a + theta_JA P(T_jmax),
+    where the junction heads at R_DS(on)'s T_jmax value: above T_jmax, finite.
     """
     p = lm4651.p_clip(f, s["r_load"], s["supply"]) if s["p_continuous"] is None else s["p_continuous"]
     a = (lm4651.p_switch(f, p, t_overmod=s["t_overmod"]) + lm4651.p_idle_4652(s["supply"]))
@@ -60,11 +83,14 @@ def heat(s: dict, f, theta_sa=None):
     t_target = DEV["tj_max"] - s["tj_margin"]
     need = (t_target - s["t_ambient"]) / (a + b * lm4651.rds_on_max(t_target)) - path
     sink = need if theta_sa is None else theta_sa
-    theta = path + sink
+    theta = lm4651.THETA_JA[s["package"]] if bare else path + sink
     k = b * lm4651.RDS_ON_MAX_25 * lm4651.RDS_TC
     p0 = a + b * lm4651.RDS_ON_MAX_25 * (1 - 25.0 * lm4651.RDS_TC)
     runaway = theta * k >= 1
     tj = np.where(runaway, np.inf, (s["t_ambient"] + theta * p0) / np.where(runaway, 1.0, 1 - theta * k))
+    if bare:
+        hot = s["t_ambient"] + theta * (a + b * lm4651.rds_on_max(DEV["tj_max"]))
+        tj = np.where(tj <= DEV["tj_max"], tj, hot)
     return need, tj, a + b * lm4651.rds_on_max(tj)
 
 
@@ -78,6 +104,25 @@ def efficiency(s: dict, f_nom, l_out):
     return p / (p + loss)
 
 
+def p_unclipped(s: dict) -> float:
+    """The power that must not clip: p_out, or the THD+N test point if higher (above clipping THD+N is 1 %
+    or more by the datasheet's own definition of the clipping point, so a test point there is no test)."""
+    return max(s["p_out"], s["thd_test_power"])
+
+
+def thermal(s: dict, f_slow, f_fast):
+    """(theta_SA needed, T_j, dissipation, T_j with no heat sink), the last three at the hotter oscillator
+    corner. The heat sink is the one given, else the one needed: the smaller need of the two corners,
+    so the corner that sets it sits at 150 C - tj_margin and the other runs cooler; that corner's
+    dissipation is the one reported."""
+    need = np.minimum(heat(s, f_slow)[0], heat(s, f_fast)[0])
+    sink = need if s["theta_sa_available"] is None else s["theta_sa_available"]
+    (_, tj_s, p_s), (_, tj_f, p_f) = heat(s, f_slow, sink), heat(s, f_fast, sink)
+    slow = (tj_s > tj_f) | ((tj_s == tj_f) & (p_s >= p_f))
+    bare = np.maximum(heat(s, f_slow, bare=True)[1], heat(s, f_fast, bare=True)[1])
+    return need, np.where(slow, tj_s, tj_f), np.where(slow, p_s, p_f), bare
+
+
 def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
     """Every figure and margin of candidates (arrays broadcast), each at its worst corner."""
     r_osc, l_out, c_out, r_dly = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
@@ -86,23 +131,19 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
     fo, lo, co = corner_factors(s)
     f, l, c = f_nom[..., None] * fo, l_out[..., None] * lo, c_out[..., None] * co
     rl, vs = s["r_load"], s["supply"]
-    thd = lm4651.thd_n_joint(f, l, c, s["thd_test_power"], rl, vs).max(-1)
+    thd = lm4651.thd_n_measured(f, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"]).max(-1)
     ripple = lm4651.ripple_rms(f, l, c, rl, vs).max(-1)
-    dev = band_deviation_db(s["f_audio"], l, c, rl).max(-1)
+    dev = band_deviation_box_db(s, l_out, c_out)
     q = lm4651.filter_q(l, c, rl).max(-1)
     i_pk = lm4651.inductor_peak(f, l, c, lm4651.v_clip_peak(f, rl, vs), rl, vs, s["f_audio"]).max(-1)
     f_slow, f_fast = f_nom * (1 - s["osc_tol_slow"]), f_nom * (1 + s["osc_tol_fast"])
     p_clip = lm4651.p_clip(f_fast, rl, vs)
-    heats = [heat(s, x, s["theta_sa_available"]) for x in (f_slow, f_fast)]
-    need = np.minimum(heats[0][0], heats[1][0])
-    worst = np.where(heats[0][1] >= heats[1][1], 0, 1)
-    tj = np.where(worst == 0, heats[0][1], heats[1][1])
-    p_d = np.where(worst == 0, heats[0][2], heats[1][2])
+    need, tj, p_d, tj_bare = thermal(s, f_slow, f_fast)
     t_dead = lm4651.dead_time_total(r_dly)
     sink = 0.0 if s["theta_sa_available"] is None else s["theta_sa_available"]
     margins = {
         "oscillator range": np.minimum(f_slow / DEV["f_min"] - 1, 1 - f_fast / DEV["f_max"]),
-        "THD+N": 1 - thd / s["thd_max"], "clipping": p_clip / s["p_out"] - 1,
+        "THD+N": 1 - thd / s["thd_max"], "clipping": p_clip / p_unclipped(s) - 1,
         "ripple": 1 - ripple / s["ripple_max"], "audio band": 1 - dev / s["droop_max"],
         "filter Q": 1 - q / s["q_max"], "inductor peak": 1 - i_pk / min(s["i_sat"], lm4651.I_LIMIT),
         "dead time": t_dead / s["dead_time_min"] - 1,
@@ -112,7 +153,7 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
         ok &= m >= -1e-12
     return {"f_sw": f_nom, "f_sw_min": f_slow, "f_sw_max": f_fast, "thd_n": thd, "ripple": ripple,
             "band_deviation": dev, "q": q, "i_peak": i_pk, "p_clip": p_clip, "theta_sa_required": need,
-            "t_junction": tj, "p_dissipation": p_d, "dead_time": t_dead,
+            "t_junction": tj, "p_dissipation": p_d, "t_junction_no_sink": tj_bare, "dead_time": t_dead,
             "efficiency": efficiency(s, f_nom, l_out), "margins": margins, "ok": ok}
 
 

@@ -39,7 +39,14 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
     """What a valid design does that is implausible: each warning says its threshold and why."""
     out = []
     need, path = fig["theta_sa_required"], DEV["theta_jc"][s["package"]] + s["theta_cs"]
-    free_air = {"TF": 43.0, "T": 37.0}[s["package"]]
+    free_air = lm4651.THETA_JA[s["package"]]
+    given = s["theta_sa_available"]
+    if given is not None and given < THETA_SA_MADE[0]:
+        out.append(f"theta_sa_available = {given:g} K/W: no TO-220 heat sink made is that good (below about "
+                   f"{THETA_SA_MADE[0]:g} K/W needs a very large extrusion or forced air); check the value")
+    elif given is not None and given > THETA_SA_MADE[1]:
+        out.append(f"theta_sa_available = {given:g} K/W: above about {THETA_SA_MADE[1]:g} K/W, worse than the "
+                   "smallest clip-on TO-220 heat sinks made; check the value")
     if need + path >= free_air:
         out.append(f"no heat sink needed: {need:.1f} K/W of sink would do, and the bare {s['package']} package "
                    f"already reaches {free_air:g} K/W junction to ambient (datasheet thermal table)")
@@ -84,11 +91,46 @@ def _achievable(s: dict, fig: dict) -> dict:
 
 
 #: check -> (label, value in the figures, how it is shown, the spec key it is held to)
-SHOW = {"THD+N": ("THD+N", "thd_n", "{:.3%}", "thd_max"), "clipping": ("p_out", "p_clip", "{:.1f} W", "p_out"),
+SHOW = {"THD+N": ("THD+N", "thd_n", "{:.3%}", "thd_max"), "clipping": ("clipping power", "p_clip", "{:.1f} W", "p_out"),
         "ripple": ("ripple", "ripple", "{:.3f} V", "ripple_max"),
         "audio band": ("band deviation", "band_deviation", "{:.2f} dB", "droop_max"),
         "filter Q": ("Q", "q", "{:.2f}", "q_max"), "inductor peak": ("peak current", "i_peak", "{:.2f} A", "i_sat"),
         "heat sink": ("theta_SA", "theta_sa_required", "{:.2f} K/W", "theta_sa_available")}
+
+
+def _heat_sink_reach(s: dict, ev: dict, achievable: dict) -> str:
+    """What the heat sink asked for (an ideal one, 0 K/W, if none) can carry with the best candidate: the
+    largest p_continuous at this ambient, the hottest ambient (when above the schema's -40 C), and whether
+    p_continuous is more than the amplifier can deliver at all (its clipping power at 50 kHz, the slowest
+    the datasheet allows the oscillator)."""
+    path = DEV["theta_jc"][s["package"]] + s["theta_cs"]
+    sink = s["theta_sa_available"] or 0.0
+    t_target = DEV["tj_max"] - s["tj_margin"]
+    watts = (t_target - s["t_ambient"]) / (ev["theta_sa_required"] + path)  # the best candidate's dissipation
+    text = ""
+    p_max = float(lm4651.p_clip(DEV["f_min"], s["r_load"], s["supply"]))
+    if s["p_continuous"] is not None and s["p_continuous"] > p_max:
+        achievable["p_deliverable"] = p_max
+        text += (f"; p_continuous = {s['p_continuous']:g} W is more than the amplifier can deliver: about "
+                 f"{p_max:.0f} W at most (clipping at {DEV['f_min'] / 1e3:.0f} kHz, the slowest oscillator)")
+    # at T_j = t_target the LM4652's dissipation is linear in the power it carries, P = w0 + w1 p, at each
+    # oscillator corner: the largest p the heat sink carries is the smaller of the two corners'
+    allowed = (t_target - s["t_ambient"]) / (path + sink)
+    p_cont = np.inf
+    for f in (ev["f_sw_min"], ev["f_sw_max"]):
+        w0, w1 = ((t_target - s["t_ambient"]) / (model.heat({**s, "p_continuous": q}, f)[0] + path) for q in (0, 1))
+        p_cont = min(p_cont, (allowed - w0) / (w1 - w0))
+    achievable["p_continuous_max"] = max(p_cont, 0.0)
+    which = "an ideal heat sink" if s["theta_sa_available"] is None else "the heat sink"
+    text += (f"; the LM4652 would dissipate {watts:.1f} W at T_j = {t_target:.0f} C, {which} carries "
+             f"{allowed:.1f} W there: p_continuous at most {max(p_cont, 0.0):.0f} W")
+    if "p_deliverable" in achievable and p_cont >= achievable["p_deliverable"]:
+        text += f", more than the amplifier delivers: leave p_continuous out (or at most {p_max:.0f} W)"
+    t_amb = t_target - watts * (path + sink)
+    if t_amb >= -40.0:
+        achievable["t_ambient_max"] = t_amb
+        text += f", or an ambient of at most {t_amb:.0f} C"
+    return text
 
 
 def infeasible(s: dict, r_dly: float, searched=None):
@@ -108,16 +150,14 @@ def infeasible(s: dict, r_dly: float, searched=None):
             parts.append(f"{k} fails")
             achievable[k] = ev["margins"][k]
             continue
-        asked = s[spec_key] if s.get(spec_key) is not None else 0.0
-        parts.append(f"{label}: best {fmt.format(ev[key])} (asked {fmt.format(asked)})")
+        if k == "clipping" and s["thd_test_power"] > s["p_out"]:  # the test point must not clip either
+            spec_key = "thd_test_power"
+        asked = s[spec_key]
+        shown = "an ideal heat sink, 0 K/W" if asked is None else f"{spec_key} = {fmt.format(asked)}"
+        parts.append(f"{label}: best {fmt.format(ev[key])} (asked {shown})")
         achievable[key] = ev[key]
-        if k == "heat sink":  # the hottest ambient the best candidate survives with the asked heat sink
-            path = DEV["theta_jc"][s["package"]] + s["theta_cs"]
-            t_target = DEV["tj_max"] - s["tj_margin"]
-            watts = (t_target - s["t_ambient"]) / (ev["theta_sa_required"] + path)
-            achievable["t_ambient_max"] = t_target - watts * (path + asked)
-            parts[-1] += (f": the LM4652 dissipates {watts:.1f} W at T_j = {t_target:.0f} C, so an ambient of at "
-                          f"most {achievable['t_ambient_max']:.0f} C")
+        if k == "heat sink":
+            parts[-1] += _heat_sink_reach(s, ev, achievable)
     if not reach:  # each check can be met alone, but not together: the candidate closest to meeting all
         i = int(np.argmax(np.min(np.stack(list(fig["margins"].values())), axis=0)))
         ev = model.at(fig, i)
