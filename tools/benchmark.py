@@ -38,13 +38,16 @@ def timed(fn, repeat=5):
 
 
 def reduced_spec(rng) -> dict:
-    """The unit test's family: E12 dividers over half a decade, R9 E6/E12 over two decades, up to two pins."""
+    """The unit test's family: E12 dividers over half a decade, R9 E6/E12 over two decades, up to two pins,
+    the bias, offset current and divider-current limit varied."""
     i_no = float(rng.uniform(0.1, 5))
     spec = dict(i_no_trip=i_no, i_must_trip=i_no * float(rng.uniform(1.6, 4)),
                 resistor_tolerance=float(rng.choice([0.001, 0.01, 0.02])), r7_tolerance=float(rng.choice([0.01, 0.05])),
                 zener_voltage=float(rng.choice([5.6, 8.2, 12.0])), zener_tolerance=float(rng.choice([0.02, 0.05])),
                 offset=float(rng.uniform(0, 0.02)), input_bias=float(rng.choice([0.0, 100e-9, 500e-9])),
                 min_margin=float(rng.choice([0.0, 0.02])), input_headroom=float(rng.choice([1.0, 2.0])),
+                input_offset_current=float(rng.choice([0.0, 50e-9, 150e-9])),
+                divider_current_max=float(rng.choice([1e-3, 3e-3, 0.1])),
                 r7_series="E12", r7_min=0.01, r7_max=100.0, r9_series=str(rng.choice(["E6", "E12"])),
                 r9_min=10.0 ** int(rng.integers(1, 4)))
     spec["r9_max"] = spec["r9_min"] * 100
@@ -58,7 +61,7 @@ def reduced_spec(rng) -> dict:
 
 def limiter_network(cases: int = 200) -> dict:
     rng = np.random.default_rng(2026)
-    same = same_net = feasible = 0
+    same = same_net = feasible = feasible_same = 0
     t_bb, t_enum = [], []
     for _ in range(cases):
         spec = reduced_spec(rng)
@@ -77,7 +80,9 @@ def limiter_network(cases: int = 200) -> dict:
             continue
         feasible += 1
         worst = min(got.margin_low, got.margin_high)
-        same += got.r7 == expected[0] and expected[2] - current_limiter.GAP - 1e-9 <= worst <= expected[2] + 1e-9
+        ok = got.r7 == expected[0] and expected[2] - current_limiter.GAP - 1e-9 <= worst <= expected[2] + 1e-9
+        same += ok
+        feasible_same += ok
         same_net += got.r7 == expected[0] and got.network == expected[1]
     # the full E96 default: the branch and bound timed; the enumeration timed on a sample and extrapolated
     s = current_limiter.checked({})
@@ -87,7 +92,8 @@ def limiter_network(cases: int = 200) -> dict:
     t = time.perf_counter()
     limiter_corners(1.0, sample, s)
     per_network = (time.perf_counter() - t) / 20_000
-    return {"cases": cases, "feasible": feasible, "same_optimum": int(same), "same_network": int(same_net),
+    return {"cases": cases, "feasible": feasible, "same_optimum": int(same), "feasible_same_optimum": int(feasible_same),
+            "same_network": int(same_net),
             "casadi_s": statistics.mean(t_bb), "enumeration_s": statistics.mean(t_enum),
             "full_casadi_s": timed(lambda: current_limiter.design({}), 3), "full_networks": float(networks),
             "full_enumeration_s_extrapolated": per_network * networks}
