@@ -40,3 +40,36 @@ def test_equations_json_and_tables():
 def test_unknown_command_is_a_usage_error():
     out = subprocess.run([sys.executable, "-m", "handbook", "frobnicate"], capture_output=True, text=True)
     assert out.returncode == 2 and "invalid choice" in out.stderr and "Traceback" not in out.stderr
+
+
+def _run_cols(cols, *args):
+    env = {**__import__("os").environ, "COLUMNS": str(cols)}
+    out = subprocess.run([sys.executable, "-m", "handbook", *args], capture_output=True, text=True, timeout=120, env=env)
+    assert out.returncode == 0, out.stderr
+    return out.stdout
+
+
+def test_examples_fit_the_terminal_in_the_printed_unit_and_filter():
+    text = _run_cols(90, "examples", "--source", "AN94002", "--status", "misprint")
+    lines = text.splitlines()
+    assert all(len(line) <= 90 for line in lines)
+    assert "an94002-window-high" in text and "an93008" not in text and " rounding " not in text
+    # recomputed in the printed unit: CAP-CD's bound printed as 0.0148 uF is shown in uF, not in farads
+    full = _run_cols(200, "examples", "--source", "an94002-capcd-bound")
+    assert "0.0148 uF" in full and "e-08" not in full
+    assert not any(w.endswith("…") and len(w) > 40 for w in full.split())  # the last column wraps, it is not cut
+
+
+def test_equations_filter_by_status():
+    text = _run_cols(100, "equations", "--status", "differs")
+    assert "lm4651-eq8" in text and "an94002-eq13 " not in text
+    assert all(len(line) <= 100 for line in text.splitlines())
+
+
+def test_errata_command():
+    rows = json.loads(run("errata", "--json"))
+    assert len(rows) > 10
+    for r in rows:
+        assert {"id", "source", "kind", "what", "printed", "computed", "evidence", "consequence"} <= set(r)
+    assert {r["source"].split()[0] for r in rows} >= {"AN94002", "AN93008"}
+    assert "AN94002" in run("errata", "--source", "AN94002")

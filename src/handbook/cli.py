@@ -1,4 +1,4 @@
-"""``python -m handbook``: the command-line face of the handbook's registries."""
+"""python -m handbook: the command-line face of the handbook's registries, designs and circuits."""
 from __future__ import annotations
 
 import argparse
@@ -6,41 +6,65 @@ import json
 import sys
 
 from . import catalog
+from .cli_text import fit_table, spec_help, template
+
+_spec_help = spec_help  # the schema test reads the help through this name
 
 
-def _table(rows: list[dict], cols: list[tuple[str, str, int]]) -> str:
-    out = ["  ".join(title.ljust(w) for _, title, w in cols).rstrip()]
-    out.append("  ".join("-" * w for _, _, w in cols))
-    for r in rows:
-        cells = []
-        for key, _, w in cols:
-            v = r[key]
-            v = f"{v:.6g}" if isinstance(v, float) else str(v)
-            cells.append(v[:w].ljust(w))
-        out.append("  ".join(cells).rstrip())
-    return "\n".join(out)
+def _filtered(rows: list[dict], args, status_of) -> list[dict]:
+    """Rows whose source contains --source (any case) and whose status is --status."""
+    if args.source:
+        rows = [r for r in rows if args.source.lower() in (r["source"] + " " + r["id"]).lower()]
+    if args.status:
+        rows = [r for r in rows if status_of(r) == args.status]
+    return rows
 
 
 def cmd_examples(args) -> int:
-    rows = catalog.claims()
+    rows = _filtered(catalog.claims(), args, lambda r: r["status"])
     if args.json:
         keys = ("id", "source", "quantity", "unit", "printed", "computed", "status", "reason", "relation", "basis")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
-    else:
-        print(_table(rows, [("id", "id", 26), ("printed_text", "printed", 12), ("computed", "computed (SI)", 13),
-                            ("unit", "unit", 6), ("status", "status", 12), ("reason", "reason", 90)]))
+        return 0
+    from .report.tables import _in_printed_unit
+
+    table = []
+    for r in rows:
+        printed, computed = _in_printed_unit(r["printed_text"], r["computed"]) if r["printed_text"] else ("", "")
+        table.append([r["id"], printed, computed, r["status"], r["reason"]])
+    print(fit_table(table, ["id", "printed", "recomputed", "status", "why"], [24, 12, 12, 12]))
     return 0
 
 
 def cmd_equations(args) -> int:
-    rows = catalog.equation_summaries()
+    rows = _filtered(catalog.equation_summaries(), args, lambda r: "agrees" if r["agrees"] else "differs")
     if args.json:
         keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "dimensions_ok", "law", "note")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
-    else:
-        print(_table(rows, [("id", "id", 24), ("source", "source", 34), ("agrees", "agrees", 6),
-                            ("dimensions_ok", "dims", 5), ("note", "note", 100)]))
+        return 0
+    table = [[r["id"], r["source"], "agrees" if r["agrees"] else "DIFFERS", "ok" if r["dimensions_ok"] else "ERROR",
+              r["note"] or r["title"]] for r in rows]
+    print(fit_table(table, ["id", "source", "symbolic", "dims", "note"], [22, 22, 8, 5]))
     return 0
+
+
+def cmd_errata(args) -> int:
+    rows = _filtered([{**r, "status": r["kind"]} for r in catalog.errata()], args, lambda r: r["kind"])
+    keys = ("id", "source", "kind", "what", "printed", "computed", "evidence", "consequence")
+    out = [{**{k: r.get(k) for k in keys}, "computed": r.get("recomputed"), "unit": r.get("unit")} for r in rows]
+    if args.json:
+        print(json.dumps(out, indent=1, default=str))
+        return 0
+    print(fit_table([[r["id"], r["source"], r["kind"], f"{r['what']} {r['consequence'] or ''}".strip()] for r in rows],
+                    ["id", "source", "kind", "what, and what it costs"], [24, 18, 14]))
+    return 0
+
+
+def _design_error(args, code: int, message: str, extra: dict | None = None) -> int:
+    print(f"error: {message}", file=sys.stderr)
+    if args.json:
+        print(json.dumps({"error": {"exit": code, "message": message, **(extra or {})}}, indent=1, default=float))
+    return code
 
 
 def cmd_design(args) -> int:
@@ -49,52 +73,63 @@ def cmd_design(args) -> int:
     from .design import spec as specmod
     from .design.solvers import Infeasible
 
+    if args.template:
+        print(template())
+        return 0
+    if args.spec is None:
+        return _design_error(args, 2, "give a SPEC.toml (or --template to print one with every key)")
     try:
         spec = specmod.load(args.spec)
         if args.spice:
             from .spice import runner
 
             if runner.available() is None:
-                print(f"error: --spice: {runner.why_unavailable()}", file=sys.stderr)
-                return 4
-        result = specmod.run(spec)
+                return _design_error(args, 4, f"--spice: {runner.why_unavailable()}")
+        results = specmod.run_each(spec)
     except InputError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return 2
-    except Infeasible as exc:
-        table = exc.table
+        return _design_error(args, 2, str(exc))
+    failed = {t: r for t, r in results.items() if isinstance(r, Infeasible)}
+    designed = {t: r for t, r in results.items() if t not in failed}
+    out = specmod.summary(designed)
+    for table, exc in failed.items():
         print(f"cannot be met [{table}]: {exc}", file=sys.stderr)
-        if args.json:
-            print(json.dumps({"infeasible": {"table": table, "message": str(exc), "achievable": exc.achievable}},
-                             indent=1, default=float))
-        return 3
-    out = specmod.summary(result)
+        out[table] = {"infeasible": {"table": table, "message": str(exc), "achievable": exc.achievable}}
+    if failed:  # the first table that cannot be met, where scripts written for one look for it
+        out = {"infeasible": next(iter(out[t]["infeasible"] for t in failed)), **out}
     if args.spice:
         from .spice import checks as spice
 
         try:
-            for table, figures in spice.confirm(result).items():
+            for table, figures in spice.confirm(designed).items():
                 out[table]["spice"] = figures
         except (spice.SpiceUnavailable, spice.SpiceError) as exc:
-            print(f"error: --spice: {exc}", file=sys.stderr)
-            return 4
-    if args.bom:
+            return _design_error(args, 4, f"--spice: {exc}")
+    if args.bom and not failed:
         try:
-            bom.write(bom.rows(result), args.bom)
+            bom.write(bom.rows(results), args.bom)
         except OSError as exc:
-            print(f"error: cannot write {args.bom}: {exc.strerror}", file=sys.stderr)
-            return 2
+            return _design_error(args, 2, f"cannot write {args.bom}: {exc.strerror}")
     if args.json:
-        print(json.dumps(out, indent=1))
+        print(json.dumps(out, indent=1, default=float))
     else:
-        from .design.schema import OUTPUTS
-        from .report.tables import shown_value
+        _print_designs(out, failed)
+    return 3 if failed else 0
 
-        for table, values in out.items():
-            print(f"[{table}]")
-            for o in OUTPUTS[table]:
-                print(f"  {o.label:45s} {shown_value(values[o.key], o.unit)}")
-    return 0
+
+def _print_designs(out: dict, failed: dict) -> None:
+    from .design.schema import OUTPUTS
+    from .report.tables import shown_value
+
+    lw = min(60, max(len(o.label) for outs in OUTPUTS.values() for o in outs))
+    for table in OUTPUTS:
+        print(f"[{table}]")
+        if table in failed:
+            print(f"  cannot be met: {failed[table]}")
+            continue
+        for o in OUTPUTS[table]:
+            print(f"  {o.label.ljust(lw)}  {shown_value(out[table][o.key], o.unit)}")
+        for key, value in out[table].get("spice", {}).items():
+            print(f"  SPICE: {key:38s} {value:.4g}")
 
 
 def cmd_spice(args) -> int:
@@ -111,44 +146,38 @@ def cmd_spice(args) -> int:
     else:
         from .report.tables import eng
 
-        for r in rows:
-            print(f"{r['id']:34s} {r['quantity'][:38]:38s} {eng(r['equation'], r['unit']):>12s} "
-                  f"{eng(r['spice'], r['unit']):>12s} {r['rel_diff']:8.2%}  {'agrees' if r['agrees'] else 'DIFFERS'}")
+        print(fit_table([[r["id"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]), f"{r['rel_diff']:.2%}",
+                          ("agrees: " if r["agrees"] else "DIFFERS: ") + r["quantity"]] for r in rows],
+                        ["id", "equation", "SPICE", "difference", "verdict: quantity"], [30, 12, 12, 10]))
     return 0 if all(r["agrees"] for r in rows) else 1
 
 
-def _spec_help() -> str:
-    """The specification's keys, from the one schema (handbook.design.schema)."""
-    from .design.schema import key_rows
-
-    lines = ["SPEC.toml keys (SI units; a missing table or key takes the notes' value):"]
-    table = None
-    for t, key, default, unit, meaning in key_rows():
-        if t != table:
-            lines.append(f"  [{t}]")
-            table = t
-        lines.append(f"    {key} = {default}  ({unit + ', ' if unit not in ('', '1') else ''}{meaning})")
-    lines.append("exit codes: 0 designed, 2 invalid input, 3 a valid spec nothing can meet, 4 --spice could not simulate "
-                 "(ngspice missing or a netlist it refused)")
-    return "\n".join(lines)
+def _filters(p) -> None:
+    p.add_argument("--json", action="store_true", help="a JSON list; values in SI base units")
+    p.add_argument("--source", metavar="TEXT", help="only entries whose source or id contains TEXT (e.g. AN94002)")
+    p.add_argument("--status", metavar="STATUS", help="only entries with this status (see the book's statuses)")
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m handbook", description=__doc__)
+    parser = argparse.ArgumentParser(prog="python -m handbook", description=__doc__.split(":", 1)[1].strip())
     sub = parser.add_subparsers(dest="command", required=True)
-    p = sub.add_parser("examples", help="every numeric example: printed, recomputed, status")
-    p.add_argument("--json", action="store_true", help="a JSON list; values in SI base units")
+    p = sub.add_parser("examples", help="every printed number: printed, recomputed (in the printed unit), status")
+    _filters(p)
     p.set_defaults(func=cmd_examples)
     p = sub.add_parser("equations", help="every equation: printed and derived forms, agreement")
-    p.add_argument("--json", action="store_true")
+    _filters(p)
     p.set_defaults(func=cmd_equations)
-    p = sub.add_parser("design", help="choose CAP-CD, R7/R9 and the class-D switching frequency for a spec",
-                       epilog=_spec_help(), formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("spec", help="TOML file with optional [commutation], [current_limiter], [class_d] tables")
+    p = sub.add_parser("errata", help="every erratum: what the source says, what holds, the evidence")
+    _filters(p)
+    p.set_defaults(func=cmd_errata)
+    p = sub.add_parser("design", help="choose the timing capacitors, the limiter network and the class-D parts",
+                       epilog=spec_help(), formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("spec", nargs="?", help="TOML file with optional [commutation], [current_limiter], [class_d] tables")
     p.add_argument("--json", action="store_true", help="one JSON object, SI units")
-    p.add_argument("--bom", metavar="FILE.csv", help="also write a bill of materials (written only on success)")
+    p.add_argument("--bom", metavar="FILE.csv", help="also write a bill of materials (written only when every table designs)")
     p.add_argument("--spice", action="store_true",
                    help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
+    p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")
     p.set_defaults(func=cmd_design)
     p = sub.add_parser("spice", help="every circuit's SPICE checks: equation against ngspice")
     p.add_argument("--json", action="store_true", help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, agrees")

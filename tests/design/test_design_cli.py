@@ -74,3 +74,40 @@ def test_bom_written_on_success_and_never_on_failure(tmp_path):
     for text, code in (("[commutation]\nrpm_max = 50000\n", 3), ("[commutation]\nrpm_min = -1\n", 2)):
         out = _run(tmp_path, text, "--bom", str(bom))
         assert out.returncode == code and not bom.exists() and not list(tmp_path.glob(".bom-*"))
+
+
+def test_template_is_a_complete_spec_that_designs_as_it_stands(tmp_path):
+    from handbook.design.schema import TABLES
+
+    tpl = subprocess.run([sys.executable, "-m", "handbook", "design", "--template"], capture_output=True, text=True,
+                         timeout=60)
+    assert tpl.returncode == 0
+    for table, params in TABLES.items():
+        assert f"[{table}]" in tpl.stdout
+        assert all(f"{p.name} =" in tpl.stdout for p in params)
+    fed_back = _run(tmp_path, tpl.stdout, "--json")
+    empty = _run(tmp_path, "", "--json")
+    assert fed_back.returncode == 0 and json.loads(fed_back.stdout) == json.loads(empty.stdout)
+
+
+def test_json_error_object_and_the_table_a_key_belongs_to(tmp_path):
+    out = _run(tmp_path, "pole_pairs = 4\n", "--json")
+    assert out.returncode == 2 and "put it under [commutation]" in out.stderr
+    err = json.loads(out.stdout)["error"]
+    assert err["exit"] == 2 and "pole_pairs = 4" in err["message"]
+
+
+def test_one_table_that_cannot_be_met_still_reports_the_others(tmp_path):
+    out = _run(tmp_path, "[commutation]\nrpm_max = 50000\n", "--json")
+    assert out.returncode == 3
+    r = json.loads(out.stdout)
+    assert r["commutation"]["infeasible"]["table"] == "commutation"
+    assert r["current_limiter"]["r7"] > 0 and r["class_d"]["f_sw"] > 0
+    text = _run(tmp_path, "[commutation]\nrpm_max = 50000\n")
+    assert text.returncode == 3 and "cannot be met" in text.stdout and "R7" in text.stdout
+
+
+def test_help_is_plain_text():
+    out = subprocess.run([sys.executable, "-m", "handbook", "design", "--help"], capture_output=True, text=True,
+                         timeout=60)
+    assert out.returncode == 0 and "``" not in out.stdout and ":mod:" not in out.stdout and "--template" in out.stdout
