@@ -55,8 +55,9 @@ def cmd_errata(args) -> int:
     if args.json:
         print(json.dumps(out, indent=1, default=str))
         return 0
-    print(fit_table([[r["id"], r["source"], r["kind"], f"{r['what']} {r['consequence'] or ''}".strip()] for r in rows],
-                    ["id", "source", "kind", "what, and what it costs"], [24, 18, 14]))
+    table = [[r["id"], r["source"], r["kind"], r["what"] + (f": {r['consequence']}" if r["consequence"] else "")]
+             for r in rows]
+    print(fit_table(table, ["id", "source", "kind", "what, and what it costs"], [24, 18, 14]))
     return 0
 
 
