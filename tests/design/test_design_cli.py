@@ -68,7 +68,8 @@ def test_bom_written_on_success_and_never_on_failure(tmp_path):
     assert out.returncode == 0, out.stderr
     rows = {r["reference"]: r for r in csv.DictReader(bom.open())}
     assert float(rows["C3"]["value"]) == pytest.approx(33e-9)  # 11 uA x 10/3000 s / 1.4 V / 0.95 = 27.6 nF -> E12 33 nF
-    assert rows["C3"]["series"] == "E12" and "window" in rows["C3"]["reason"]
+    assert rows["C3"]["series"] == "E12" and "window" in rows["C3"]["reason"] and rows["C3"]["value_text"] == "33 nF"
+    assert rows["R7"]["value_text"].endswith("Ω") and rows["heat sink"]["value_text"].endswith("K/W")
     assert {"C3", "C4", "R7", "R9", "R10", "R11", "R12", "R13", "R_OSC", "R_DLY", "C_BYP"} <= set(rows)
     bom.unlink()
     for text, code in (("[commutation]\nrpm_max = 50000\n", 3), ("[commutation]\nrpm_min = -1\n", 2)):

@@ -8,7 +8,8 @@ from pathlib import Path
 
 
 def rows(result: dict) -> list[dict]:
-    """Reference, value (SI), tolerance, series, and why each value was chosen."""
+    """Reference, value (SI, for programs), value_text (with its unit, for people), tolerance, series, and why
+    each value was chosen."""
     c, lim, cd = result["commutation"], result["current_limiter"], result["class_d"]
     sc, sl, sd = c.spec, lim.spec, cd.spec
     table = [
@@ -45,7 +46,22 @@ def rows(result: dict) -> list[dict]:
         ("heat sink", cd.theta_sa_required, 0.0, "K/W",
          f"LM4652 heat sink of {cd.theta_sa_required:.2f} K/W or better: T_j {cd.t_junction:.0f} C at worst"),
     ]
-    return [{"reference": r, "value": v, "tolerance": t, "series": ser, "reason": why} for r, v, t, ser, why in table]
+    return [{"reference": r, "value": v, "value_text": readable(r, v, ser), "tolerance": t, "series": ser, "reason": why}
+            for r, v, t, ser, why in table]
+
+
+#: the unit of each reference's value, by its first letter (the heat sink's is in its series column)
+_UNITS = {"C": "F", "R": "ohm", "L": "H", "D": "V"}
+
+
+def readable(ref: str, value: float, series: str) -> str:
+    """The value as a person reads it: 18 nF, 1.21 kΩ, 100 µH, 8.2 V (zener), 0.68 K/W."""
+    from ..report.tables import eng
+
+    if series == "K/W":
+        return f"{value:.3g} K/W"
+    unit = _UNITS.get(ref[0], "")
+    return eng(value, unit.replace("ohm", "Ω")) if unit else f"{value:g}"
 
 
 def write(table: list[dict], path: str | Path) -> None:
@@ -54,7 +70,7 @@ def write(table: list[dict], path: str | Path) -> None:
     fd, tmp = tempfile.mkstemp(prefix=".bom-", suffix=".csv", dir=path.parent if str(path.parent) else ".")
     try:
         with os.fdopen(fd, "w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=["reference", "value", "tolerance", "series", "reason"])
+            w = csv.DictWriter(fh, fieldnames=["reference", "value", "value_text", "tolerance", "series", "reason"])
             w.writeheader()
             w.writerows(table)
         os.replace(tmp, path)
