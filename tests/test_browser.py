@@ -107,6 +107,24 @@ def test_math_is_typeset(rendered):
     assert typeset > 100
 
 
+#: characters that never belong in a page's text (a tab where "\\t" of "\\theta" was meant, NUL, escapes)
+CONTROL = re.compile(r"[\x00-\x08\x09\x0b\x0c\x0e-\x1f\x7f]")
+
+
+def test_math_has_no_mathjax_errors_and_text_no_control_characters(rendered):
+    """MathJax puts an error inside its own container (so "typeset" alone passes it): look for the error
+    markers themselves, and for control characters in what a reader sees."""
+    for doc, (_, dom, _) in rendered.items():
+        soup = BeautifulSoup(dom, "html.parser")
+        errors = soup.select("[data-mjx-error], mjx-merror, merror")
+        assert not errors, f"{doc}: MathJax error: {errors[0].get('data-mjx-error') or errors[0].get_text()[:80]!r}"
+        for el in soup.select("pre, code, script, style"):
+            el.decompose()
+        text = soup.get_text()
+        bad = CONTROL.search(text)
+        assert not bad, f"{doc}: control character {bad.group()!r} near {text[max(0, bad.start() - 40):bad.start() + 20]!r}"
+
+
 def test_tables_are_rendered(rendered):
     """A Markdown table that failed to parse shows up as raw '|---|' text (a '|' inside a cell does that)."""
     tables = 0
