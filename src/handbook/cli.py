@@ -147,7 +147,8 @@ def cmd_spice(args) -> int:
     else:
         from .report.tables import eng
 
-        print(fit_table([[r["id"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]), f"{r['rel_diff']:.2%}",
+        unit = {r["unit"]: r["unit"].replace("ohm", "Ω") for r in rows}
+        print(fit_table([[r["id"], eng(r["equation"], unit[r["unit"]]), eng(r["spice"], unit[r["unit"]]), f"{r['rel_diff']:.2%}",
                           ("agrees: " if r["agrees"] else "DIFFERS: ") + r["quantity"]] for r in rows],
                         ["id", "equation", "SPICE", "difference", "verdict: quantity"], [30, 12, 12, 10]))
     return 0 if all(r["agrees"] for r in rows) else 1

@@ -1,6 +1,8 @@
 """The project's ngspice runner: results read from .meas, clear messages for a bad netlist, a failed
 measurement and a missing ngspice (never a traceback)."""
+import json
 import math
+import re
 import subprocess
 import sys
 
@@ -43,3 +45,32 @@ def test_spice_command_without_ngspice_exits_with_a_message(tmp_path):
     out = subprocess.run([sys.executable, "-m", "handbook", "design", str(tmp_path / "empty.toml"), "--spice"],
                          capture_output=True, text=True, env=env, timeout=60)
     assert out.returncode == 4 and "ngspice is not installed" in out.stderr and "Traceback" not in out.stderr
+
+
+@needs_ngspice
+def test_spice_command_and_designs_confirmed_by_simulation():
+    out = subprocess.run([sys.executable, "-m", "handbook", "spice", "--json"], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    rows = json.loads(out.stdout)
+    assert {"id", "circuit", "quantity", "equation", "spice", "rel_diff", "agrees"} <= set(rows[0])
+    assert len({r["circuit"] for r in rows}) >= 9 and all(r["agrees"] for r in rows)
+    # a circuit's variants (the filter's AC and transient decks, each load) count as one circuit
+    family = {r["circuit"]: re.sub(r"-(4|8)ohm$", "", r["circuit"]).replace("ripple", "filter") for r in rows}
+    for f in set(family.values()):
+        assert sum(family[r["circuit"]] == f for r in rows) >= 2, f
+
+
+@needs_ngspice
+def test_design_spice_adds_the_simulated_corners(tmp_path):
+    (tmp_path / "empty.toml").write_text("")
+    out = subprocess.run([sys.executable, "-m", "handbook", "design", str(tmp_path / "empty.toml"), "--spice", "--json"],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    r = json.loads(out.stdout)
+    lim, com, cd = r["current_limiter"], r["commutation"], r["class_d"]
+    # the simulated worst corners land on the equations' worst corners within the op-amp model's finite gain
+    assert lim["spice"]["i_trip_min"] == pytest.approx(lim["i_trip_min"], rel=0.01)
+    assert lim["spice"]["i_trip_max"] == pytest.approx(lim["i_trip_max"], rel=0.01)
+    assert {"swing_rpm_min", "swing_rpm_max"} <= set(com["spice"]) and {"f_corner", "ripple_at_load"} <= set(cd["spice"])
+    # the corner of the filter by hand: 1 / (2 pi sqrt(2 L C)) with the chosen L and C
+    assert cd["spice"]["f_corner"] == pytest.approx(1 / (2 * math.pi * math.sqrt(2 * cd["l_out"] * cd["c_out"])), rel=0.01)

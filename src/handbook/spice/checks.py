@@ -8,7 +8,11 @@ from .circuit import evaluate
 from .runner import SpiceError, SpiceUnavailable, available, why_unavailable
 
 #: the circuit builders, "module:function" under handbook.spice, each () -> Circuit with the notes' values
-BUILDERS: tuple[str, ...] = ()
+BUILDERS: tuple[str, ...] = (
+    "limiters:one_transistor", "limiters:opamp", "limiters:opamp_corner", "limiters:supply_referenced",
+    "timers:start_oscillator", "timers:commutation_delay", "timers:watchdog", "speed:circuit", "decoupling:circuit",
+    "class_d:circuit", "class_d:circuit_8ohm", "class_d:ripple", "class_d:ripple_8ohm", "converter:circuit",
+)
 
 #: design table -> "module:function" taking that design's result, returning its SPICE figures
 DESIGN_CHECKS = {"commutation": "timers:design_check", "current_limiter": "limiters:design_check",

@@ -53,9 +53,9 @@ def evaluate(circuit: Circuit, run=None) -> list[dict]:
     measured = (run or run_spice)(circuit.netlist)
     rows = []
     for c in circuit.checks:
-        value = measured[c.measure.lower()]
-        rel = abs(value - c.equation) / abs(c.equation) if c.equation else abs(value)
+        value, equation = float(measured[c.measure.lower()]), float(c.equation)
+        rel = abs(value - equation) / abs(equation) if equation else abs(value)
         rows.append({"id": c.id, "circuit": circuit.id, "quantity": c.quantity, "unit": c.unit,
-                     "equation": c.equation, "spice": value, "rel_diff": rel, "agrees": rel <= c.rtol,
+                     "equation": equation, "spice": value, "rel_diff": rel, "agrees": bool(rel <= c.rtol),
                      "rtol": c.rtol, "why": c.why})
     return rows

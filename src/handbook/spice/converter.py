@@ -1,0 +1,187 @@
+"""TCA5600/TCF5600 DC/DC converter's power stage (excerpt, figures 13 and 14; eq 1 to 6a).
+
+The stage as eq 1 and 2 describe it (KVL in the two phases): VCC2 drives the coil L1 through the internal
+switch S1 (a constant V_CE(sat)) and the sense resistor R1 to ground while charging; when S1 opens, the
+coil dumps through the rectifier D1 (V_F) into C2, which sits at the programmable regulator's input,
+V_out2 + V(9-8). The converter has no time base (excerpt): the comparator U1 opens S1 when R1's drop
+reaches V12(H), and S1 closes again when the coil has dumped its energy, so the coil current is figure
+14's triangle, t1 + t2 = 1/f (eq 4). Assumptions, each a simplification the chapter names:
+
+* S1 is an ideal switch (1 mOhm) with V_CE(sat) as a constant source in series;
+* U1 is one ngspice switch with hysteresis on R1 x the coil current (R1's own drop while charging, the
+  dump current scaled by R1 while dumping): off at V12(H), on again at 0.1 % of it, with no delay;
+* D1 is a silicon junction (N = 1, no series resistance) whose drop is V_F at the dump's mean current,
+  I_peak / 2: its drop falls as the current does, where eq 1 holds V_F constant;
+* C2 (100 uF, figure 13) is taken as holding its voltage over a cycle (7 uC a cycle moves it 74 mV): a
+  source VC2 at V_out2 + V(9-8), which the current delivered into it is measured against.
+
+Every device value is the chapter's assumption (:mod:`handbook.sources.tca5600.data`: the excerpt prints
+no electrical characteristics); L1 and R1 are figure 13's.
+"""
+from __future__ import annotations
+
+import math
+from functools import partial
+
+import numpy as np
+
+from ..report.tables import eng
+from ..sources import tca5600
+from .circuit import Check, Circuit, Part
+from .runner import run
+
+EXCERPT = "TCA5600/TCF5600 excerpt"
+K_Q = 1.380649e-23 / 1.602176634e-19  # V/K: kT/q per kelvin
+T_SIM = 300.15  # K: ngspice's default temperature (27 C), where the diode's IS is set
+RESTART = 1e-3  # S1 closes again when the coil current is down to this fraction of V12(H) / R1
+STEPS_PER_PERIOD = 2000  # transient step: a 2000th of the expected period (0.05 % of the peak per step)
+
+
+def defaults() -> dict:
+    """The chapter's operating point (tca5600.params()) with figure 13's L1 and R1."""
+    return {**tca5600.params(), **tca5600.APPLICATION}
+
+
+def _with(p: dict | None) -> dict:
+    d = defaults()
+    unknown = set(p or {}) - set(d)
+    if unknown:
+        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}; known: {', '.join(sorted(d))}")
+    return {**d, **(p or {})}
+
+
+def parts(p: dict) -> tuple[Part, ...]:
+    return (Part("VCC2", p["v_cc2_min"], "V", "the converter's supply, at its lowest"),
+            Part("L1", p["l1"], "H"), Part("S1", p["vce_sat"], "V", "internal switch, V_CE(sat)"),
+            Part("R1", p["r1"], "ohm", "current sense"), Part("U1", p["v12h"], "V", "comparator, V12(H)"),
+            Part("D1", p["v_f"], "V", "rectifier, V_F"),
+            Part("VC2", p["v_out2"] + p["regulator_drop"], "V", "C2 at the regulator's input, V_out2 + V(9-8)"))
+
+
+def label(part: Part) -> str:
+    """A part as the drawing shows it: designator, and value with its unit (what the value is, where it is
+    a device's figure)."""
+    value = eng(part.value, part.unit).replace("ohm", "Ω")
+    what = {"S1": "V_CE(sat) = ", "U1": "V12(H) = ", "D1": "V_F = "}.get(part.ref, "")
+    return f"{part.ref} {what}{value}"
+
+
+def diode_is(v_f: float, i_at: float) -> float:
+    """Saturation current of a junction (N = 1) that drops v_f at i_at, at ngspice's 27 C."""
+    return i_at / math.expm1(v_f / (K_Q * T_SIM))
+
+
+def element_lines(ps: tuple[Part, ...]) -> list[str]:
+    """The parts as netlist lines (a part may need a model or a helper line): vcc, sw (the coil's switched end),
+    e (R1's top), out (C2)."""
+    v = {q.ref: q.value for q in ps}
+    i_peak = v["U1"] / v["R1"]
+    delta = RESTART * v["U1"]
+    return [
+        f"VCC2 vcc 0 {v['VCC2']:.6g}",
+        f"L1 vcc sw {v['L1']:.6g}",
+        "S1 sw c ctl 0 SW_S1",
+        f"VS1 c e {v['S1']:.6g}",  # S1's V_CE(sat), in series with the ideal switch
+        f"R1 e 0 {v['R1']:.6g}",
+        # U1: the control is V12(H) less R1 x the coil current (R1's drop, or the dump current through VD1)
+        f"BU1 ctl 0 V={v['U1']:.6g}-(v(e)+{v['R1']:.6g}*i(VD1))",
+        f".model SW_S1 SW(VT={(v['U1'] - delta) / 2:.6g} VH={(v['U1'] - delta) / 2:.6g} RON=1m ROFF=1G)",
+        "D1 sw d1 D_D1",
+        "VD1 d1 out 0",  # senses the dump current
+        f"* D1: V_F = {v['D1']:.6g} V at I_peak / 2 = {i_peak / 2:.6g} A (an assumption, tca5600 data)",
+        f".model D_D1 D(IS={diode_is(v['D1'], i_peak / 2):.6g} N=1)",
+        f"VC2 out 0 {v['VC2']:.6g}",
+    ]
+
+
+def expected(p: dict) -> dict:
+    """The equations' figures for these L1 and R1 at this operating point (eq 1 to 6a)."""
+    op = tca5600.operating_point(p["l1"], p["r1"], p)
+    vl_plus, vl_minus = tca5600.coil_voltages(p)
+    return {**op, "t2": op["t1"] * vl_minus / vl_plus}
+
+
+def _tran(p: dict, extra: list[str]) -> list[str]:
+    """Seven expected periods; the checks read the third cycle (S1 closes at the sw node's 3rd and 4th fall)."""
+    period = 1 / expected(p)["f"]
+    step = period / STEPS_PER_PERIOD
+    return [f".tran {step:.6g} {7 * period:.6g} 0 {step:.6g} uic",
+            "Bq 0 q I=i(VD1)", "Cq q 0 1", "Rq q 0 1e15", *extra]  # q: charge delivered to C2
+
+
+def _meas(p: dict) -> list[str]:
+    mid = (p["v_out2"] + p["regulator_drop"]) / 2  # the sw node: ~V_CE(sat) closed, ~V_C2 + V_F open
+    return [f".meas tran t_on3 WHEN v(sw)={mid:.6g} FALL=3", f".meas tran t_off4 WHEN v(sw)={mid:.6g} RISE=4",
+            f".meas tran t_on4 WHEN v(sw)={mid:.6g} FALL=4",
+            f".meas tran i_peak MAX i(L1) FROM={1.5 / expected(p)['f']:.6g}",  # every cycle alike after the first
+            f".meas tran q3 FIND v(q) WHEN v(sw)={mid:.6g} FALL=3", f".meas tran q4 FIND v(q) WHEN v(sw)={mid:.6g} FALL=4",
+            ".meas tran t1 PARAM='t_off4-t_on3'", ".meas tran t2 PARAM='t_on4-t_off4'",
+            ".meas tran f PARAM='1/(t_on4-t_on3)'", ".meas tran i_out PARAM='(q4-q3)/(t_on4-t_on3)'"]
+
+
+def circuit(p: dict | None = None) -> Circuit:
+    """Figure 13's power stage at the chapter's operating point, run for seven cycles: figure 14 in SPICE."""
+    p = _with(p)
+    ps, e = parts(p), expected(p)
+    ramp = "eq 2 holds R1's drop at V12(H) all through t1; it ramps from 0, so the coil sees about V12(H)/2 more"
+    diode = "D1's drop falls with the current (about V_T below V_F on average: 0.4 % of V_L+)"
+    checks = (
+        Check("tca5600-peak", "peak coil current", "A", e["i_peak"], "i_peak", 5e-3,
+              "eq 6a: S1 opens at V12(H) / R1 exactly; SPICE's step (0.05 % of the peak) and RON are all"),
+        Check("tca5600-t1", "charging time t1", "s", e["t1"], "t1", 0.05, f"{ramp}: t1 some 3 % shorter"),
+        Check("tca5600-t2", "dumping time t2", "s", e["t2"], "t2", 0.02, f"eq 1 and 3; {diode}"),
+        Check("tca5600-f", "free-running frequency", "Hz", e["f"], "f", 0.05, f"eq 4 from t1 and t2; {ramp}"),
+        Check("tca5600-iout", "current into C2", "A", e["i_out_max"], "i_out", 0.05,
+              "eq 5: the triangle's dump half over the period; follows the shorter t1 (a higher f)"))
+    title = f"TCA5600 converter power stage, L1 = {eng(p['l1'], 'H')}, R1 = {p['r1']:g} ohm"
+    netlist = "\n".join([f"* {title}", *element_lines(ps), *_tran(p, _meas(p)), ".end"]) + "\n"
+    return Circuit(id="tca5600-converter", title=title, source=f"{EXCERPT}, figures 13 and 14, eq 1 to 6a",
+                   parts=ps, netlist=netlist, checks=checks, draw=partial(draw, ps))
+
+
+def waveform(p: dict | None = None, points: int = 241) -> dict:
+    """The coil's current and voltage over two cycles from the third switch-on (figure 14), from SPICE:
+    {"t": s from that switch-on, "i": A, "v": V (vcc - sw: V_L- while charging, -V_L+ while dumping)}."""
+    p = _with(p)
+    period = 1 / expected(p)["f"]
+    t0 = 2.9 * period  # just before the third switch-on; measured exactly below
+    t = t0 + np.linspace(0.0, 2.4 * period, points)
+    meas = [f".meas tran t_on3 WHEN v(sw)={(p['v_out2'] + p['regulator_drop']) / 2:.6g} FALL=3"]
+    meas += [f".meas tran i{k:03d} FIND i(L1) AT={x:.9g}" for k, x in enumerate(t)]
+    meas += ["Ecoil vl 0 vcc sw 1"]  # the coil's voltage as one node (a probe)
+    meas += [f".meas tran v{k:03d} FIND v(vl) AT={x:.9g}" for k, x in enumerate(t)]
+    deck = "\n".join(["* TCA5600 converter, coil waveform", *element_lines(parts(p)), *_tran(p, meas), ".end"]) + "\n"
+    got = run(deck)
+    return {"t": t - got["t_on3"], "i": np.array([got[f"i{k:03d}"] for k in range(points)]),
+            "v": np.array([got[f"v{k:03d}"] for k in range(points)])}
+
+
+def draw(ps: tuple[Part, ...]):
+    """VCC2, L1, the switch S1 with R1 under it and the comparator U1, D1 into C2; labelled from the parts."""
+    import schemdraw
+    import schemdraw.elements as elm
+
+    schemdraw.use("matplotlib")
+    lab = {q.ref: label(q) for q in ps}
+    with schemdraw.Drawing(show=False) as d:
+        d.config(fontsize=11)
+        vcc = elm.SourceV().up(5).label(lab["VCC2"], loc="bottom")
+        elm.Ground().at(vcc.start)
+        elm.Inductor2().at(vcc.end).right(6).label(lab["L1"])
+        sw = elm.Dot()
+        d1 = elm.Diode().right(7).label(lab["D1"])
+        vc2 = elm.SourceV().at(d1.end).down(5).reverse().label(lab["VC2"], loc="bottom")
+        elm.Ground().at(vc2.end)
+        s1 = elm.Switch().at(sw.center).down(3).label(lab["S1"], loc="top")
+        e = elm.Dot()
+        r1 = elm.Resistor().down(2).label(lab["R1"], loc="bottom")
+        elm.Ground().at(r1.end)
+        u1 = elm.Opamp(leads=True).left().anchor("out").at((s1.center[0] + 1.2, s1.center[1]))
+        elm.Line().at(u1.out).left(1.2 - 0.3).linestyle("--")
+        elm.Line().at(e.center).right(u1.in1[0] - e.center[0] + 0.4)
+        elm.Line().toy(u1.in1)
+        elm.Line().left(0.4)
+        elm.Label().at((u1.center[0] + 0.6, e.center[1] - 0.5)).label(lab["U1"])
+        elm.Line().at(u1.in2).right(0.4)
+        elm.Label().label("V12(H)", loc="right")
+    return d

@@ -1,0 +1,94 @@
+"""The decoupling capacitor C2 (AN94002 3: "lower than 2 ohm at 2 MHz") as a real part: capacitance, ESR
+and ESL in series, driven by a 1 A AC current source so that |V| reads |Z| in ohms. Beside it two
+reference branches from the note's requirement: the smallest ideal capacitor that meets it (C_MIN, no
+ESR or ESL) and the largest inductance that meets it alone (L_MAX).
+
+The ESR and ESL are the project's illustrative values (an94002.params: not from a datasheet); a
+series R-L-C is the usual first model of a capacitor and leaves out the frequency dependence of the ESR
+and the dielectric's losses.
+"""
+from __future__ import annotations
+
+from ..sources import an94002 as note
+from .circuit import Check, Circuit, Part
+from .runner import run
+from .timers import element_lines, label
+
+NODES = {"C2": "C2 c2b 0", "ESR": "RESR z c2a", "ESL": "LESL c2a c2b", "C_MIN": "CMIN zc 0", "L_MAX": "LMAX zl 0"}
+
+
+def defaults() -> dict:
+    p = note.params()
+    return {k: p[k] for k in ("z_max", "f_decoupling", "c2", "esr", "esl")}
+
+
+def _parts(q: dict) -> tuple[Part, ...]:
+    return (Part("C2", q["c2"], "F", "decoupling capacitor"), Part("ESR", q["esr"], "ohm", "its series resistance"),
+            Part("ESL", q["esl"], "H", "its series inductance"),
+            Part("C_MIN", note.c_min_for_impedance(q["z_max"], q["f_decoupling"]), "F", "ideal, just meets 2 ohm"),
+            Part("L_MAX", note.esl_max(q["z_max"], q["f_decoupling"]), "H", "inductance that alone reaches 2 ohm"))
+
+
+def netlist(parts, extra: tuple = ()) -> str:
+    lines = ["* decoupling: C2 with ESR and ESL, |Z| = |V| for a 1 A AC source (AN94002 3)",
+             *element_lines(parts, NODES), "I1 0 z DC 0 AC 1", "I2 0 zc DC 0 AC 1", "I3 0 zl DC 0 AC 1",
+             "* a 1e15 ohm shunt on every node gives the capacitors a DC path for the operating point", ".options rshunt=1e15",
+             "* vm() in .meas needs its node saved explicitly in ngspice 39", ".save v(z) v(zc) v(zl)",
+             ".ac dec 200 1e3 1e8", *extra]
+    return "\n".join(lines) + "\n"
+
+
+def circuit(p: dict | None = None) -> Circuit:
+    """|Z| of C2 at 2 MHz, its minimum, and the two reference branches at 2 MHz."""
+    q = {**defaults(), **(p or {})}
+    parts = _parts(q)
+    f = q["f_decoupling"]
+    meas = (f".meas ac z_c2 FIND vm(z) AT={f:.6g}", f".meas ac z_cmin FIND vm(zc) AT={f:.6g}",
+            f".meas ac z_lmax FIND vm(zl) AT={f:.6g}", ".meas ac z_c2_min MIN vm(z)")
+    interp = ("an exact series R-L-C on both sides; ngspice interpolates |Z| between sweep points (200 per "
+              "decade)")
+    checks = (
+        Check("decoupling-z-c2", f"|Z| of C2 with its ESR and ESL at {f / 1e6:g} MHz", "ohm",
+              float(note.impedance(f, q["c2"], q["esr"], q["esl"])), "z_c2", 0.005, interp),
+        Check("decoupling-z-cmin", f"|Z| of the smallest ideal capacitor at {f / 1e6:g} MHz", "ohm",
+              float(note.impedance(f, parts[3].value)), "z_cmin", 0.005, interp),
+        Check("decoupling-z-lmax", f"|Z| of the largest series inductance at {f / 1e6:g} MHz", "ohm",
+              q["z_max"], "z_lmax", 0.005, interp + "; the inductance alone, wL"),
+        Check("decoupling-z-esr", "smallest |Z| of C2 (at its self-resonance: the ESR)", "ohm",
+              float(note.impedance((q["esl"] * q["c2"]) ** -0.5 / (2 * 3.141592653589793), q["c2"], q["esr"], q["esl"])),
+              "z_c2_min", 0.01, interp + "; the minimum falls between two points"))
+    return Circuit("decoupling", "Decoupling capacitor C2", "AN94002 3", parts, netlist(parts, meas), checks,
+                   draw=lambda: draw(parts))
+
+
+def sweep(p: dict | None = None, points: int = 41) -> dict:
+    """|Z| of the three branches at ``points`` frequencies, 1 kHz to 100 MHz, for the chapter's plot."""
+    q = {**defaults(), **(p or {})}
+    freqs = [1e3 * 10 ** (5 * k / (points - 1)) for k in range(points)]
+    meas = tuple(f".meas ac {n}{k} FIND vm({node}) AT={f:.6g}" for k, f in enumerate(freqs)
+                 for n, node in (("a", "z"), ("b", "zc"), ("c", "zl")))
+    out = run(netlist(_parts(q), meas))
+    return {"f": freqs, **{key: [out[f"{n}{k}"] for k in range(points)] for key, n in (("c2", "a"), ("c_min", "b"),
+                                                                                           ("l_max", "c"))}}
+
+
+def draw(parts):
+    import schemdraw
+    import schemdraw.elements as elm
+
+    schemdraw.use("matplotlib")
+    by = {p.ref: label(p) for p in parts}
+    d = schemdraw.Drawing(show=False)
+    d.config(fontsize=10, unit=2.2)
+    d.add(elm.Dot(open=True).at((0, 6.6)).label("V_P pin", loc="top"))
+    d.add(elm.Resistor().down().label(by["ESR"]))
+    d.add(elm.Inductor2().down().label(by["ESL"]))
+    d.add(elm.Capacitor().down().label(by["C2"]))
+    d.add(elm.Ground())
+    d.add(elm.Label().at((0, -1.2)).label("C2 as a real part", fontsize=9))
+    d.add(elm.Capacitor().at((5, 2.2)).down().label(by["C_MIN"] + "\n(ideal)"))
+    d.add(elm.Ground())
+    d.add(elm.Inductor2().at((9, 2.2)).down().label(by["L_MAX"] + "\n(alone)"))
+    d.add(elm.Ground())
+    d.add(elm.Label().at((7, -1.2)).label("the 2 ohm at 2 MHz requirement, two ways", fontsize=9))
+    return d

@@ -1,0 +1,407 @@
+"""The current limiters simulated: AN94002's one-transistor limiter (figure 2) and op-amp limiter (figure 3,
+the zener-bridged level shift; AN93008's figure 4 is the same circuit), AN93008's supply-referenced limiter
+(its figure 3), and a designed limiter confirmed at its two worst corners (:func:`design_check`).
+
+Every limiter is driven the same way: the motor current, a current source in series with the sense resistor
+R7, ramps slowly from zero (0 to ``i_max`` in ``RAMP`` seconds after a 1 ms pause), and ngspice measures the
+motor current at which the limiter acts: for the op-amp limiters where the LM358's output falls through the
+middle of its swing, for the one-transistor limiter where T2's collector current reaches 2 mA (the current
+of the BC557's V_BE(on) figure). The regulator the limiter throttles (T1, the OTA) is not simulated: the
+ramp is open loop, so the measured point is the limiter's threshold, which is what the equations give.
+Device models: :mod:`.models` (BZX79-C8V2, BC557, LM358, from ``datasheet_facts.md``).
+"""
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from ..core import series
+from ..sources import an93008, an94002
+from ..sources.an94002.parts import PARTS
+from . import models
+from .circuit import Check, Circuit, Part
+from .runner import run
+
+RAMP = 1.0  # s: the motor current's ramp (slow against the LM358's 7 Hz pole, see the checks' tolerances)
+T0 = 1e-3  # s: the pause before the ramp, where the V_cs = 0 figures are read
+BOARD = {ref: value for ref, _, value, *_ in PARTS}
+#: netlist names of the designators whose letter is not SPICE's (T2 is a Q element, U1 a subcircuit)
+NAMES = {"T2": "QT2", "U1": "XU1"}
+
+
+def element_lines(parts, nodes: dict[str, str], sfx: str = "", **extra) -> list[str]:
+    """One line per part: ``nodes[ref]`` holds its nodes, ``{s}`` for the suffix ``sfx`` and ``{v}`` where the
+    value goes (else the value ends the line); ``extra`` fills any other field."""
+    out = []
+    for p in parts:
+        value = p.value if isinstance(p.value, str) else f"{p.value:.6g}"
+        body = nodes[p.ref].format(s=sfx, v=value, **extra)
+        out.append(f"{NAMES.get(p.ref, p.ref)}{sfx} {body}" + ("" if "{v}" in nodes[p.ref] else f" {value}"))
+    return out
+
+
+def _ramp_nodes(top: str) -> str:
+    """The motor: a 0 V ammeter (VAM) then the ramping current source, from the sense point to ground."""
+    return f"{top}{{s}} 0 PWL(0 0 {T0:g} 0 {T0 + RAMP:g} {{v}})"
+
+
+def _deck(title: str, models_: list[str], body: list[str], meas: list[str]) -> str:
+    return "\n".join([f"* {title}", ".options temp=25 tnom=25", *models_, *body,
+                      f".tran {RAMP / 2000:g} {T0 + RAMP:g} 0 {RAMP / 2000:g}", *meas, ".end"]) + "\n"
+
+
+def _probe(name: str, expr: str) -> str:
+    """A behavioural source whose node holds ``expr`` (`.meas` reads single nodes only)."""
+    return f"Bp{name} p{name} 0 V={expr}"
+
+
+# ----------------------------------------------------------------------------------------------
+# (a) AN94002 figure 2: the one-transistor limiter
+
+def one_transistor_defaults() -> dict:
+    p = an94002.params()
+    return {"i_limit": p["i_limit"], "v_be": p["v_be"], "v_be_tc": p["v_be_tc"], "v_supply": p["v_supply"],
+            "v_be_bc557": an94002.FACTS["bc557_vbe"].value[1], "temps": (p["t_low"], 25.0, p["t_high"]),
+            "r_load": 1e3}
+
+
+def one_transistor_parts(p: dict) -> tuple[Part, ...]:
+    r7 = an94002.r7_for_limit(p["i_limit"], p["v_be"])
+    return (Part("VS", p["v_supply"], "V", "motor supply V_s"),
+            Part("R7", r7, "ohm", "sense resistor, R7 = V_be / I_lim with the note's 0.8 V (r7_for_limit)"),
+            Part("T2", "BC557", "", f"V_BE(on) {p['v_be_bc557']:g} V at 2 mA (typ, BC557 datasheet)"),
+            Part("RL", p["r_load"], "ohm", "stand-in for the regulator drive T2 pulls on (not in the note)"),
+            Part("IM", 2 * p["i_limit"], "A", "motor current, ramped from 0 to this value"))
+
+
+ONE_T_NODES = {"VS": "vs{s} 0", "R7": "vs{s} cs{s}", "T2": "col{s} cs{s} vs{s}", "RL": "cl{s} 0",
+               "IM": _ramp_nodes("csm")}
+
+
+def one_transistor(p: dict | None = None) -> Circuit:
+    """AN94002 figure 2 at three temperatures side by side (T2's instance temperature; R7 has none)."""
+    p = {**one_transistor_defaults(), **(p or {})}
+    parts = one_transistor_parts(p)
+    body, meas, checks = [], [], []
+    for k, t in enumerate(p["temps"]):
+        sfx = "" if t == 25.0 else f"_{k}"
+        lines = element_lines(parts, ONE_T_NODES, sfx)
+        lines[2] += f" temp={t:g}"
+        body += [*lines, f"VAM{sfx} cs{sfx} csm{sfx} 0", f"VC{sfx} col{sfx} cl{sfx} 0"]
+        name = f"i_on_{k}"
+        meas.append(f".meas tran {name} FIND i(VAM{sfx}) WHEN i(VC{sfx})={models.BC557_IC:g} RISE=1")
+        eq = float(an94002.limit_current(parts[1].value, t, p["v_be_bc557"], p["v_be_tc"]))
+        checks.append(Check(
+            f"limiter-1t-on-{t:g}C", f"motor current where T2 takes over (I_C = 2 mA), {t:g} °C", "A", eq, name,
+            0.005 if t == 25.0 else 0.03,
+            "at 25 °C the model is the datasheet's V_BE(on) at 2 mA, so only T2's base current (I_C / 200) differs"
+            if t == 25.0 else
+            f"SPICE's silicon physics (EG = 1.11 eV, XTI = 3, not tuned) gives about -1.9 mV/K at 2 mA, the equation "
+            f"the -2 mV/K rule of thumb; ±3 % of V_BE over {abs(t - 25):g} K allows the two to differ by "
+            f"{0.03 * 0.6 / max(abs(t - 25), 1) * 1e3:.2f} mV/K"))
+    deck = _deck("AN94002 figure 2: one-transistor limiter", models.bc557(), body, meas)
+    return Circuit("limiter-one-transistor", "One-transistor current limiter", "AN94002 figure 2", parts, deck,
+                   tuple(checks), draw=lambda: draw_one_transistor(parts))
+
+
+# ----------------------------------------------------------------------------------------------
+# (b) AN94002 figure 3: the op-amp limiter with the zener-bridged level shift
+
+def opamp_defaults() -> dict:
+    """The note's values: R9 from eq 14 for 100 mV, its E96 value (as the parts chapter picks it); R7 = V_cs
+    over the chosen limit; D1 fed by R14 (parts list)."""
+    p = an94002.params()
+    r9 = series.nearest("E96", an94002.r9_for(p["v_cs"], p["v_zener"], p["r10"], p["r11"]))
+    return {"v_supply": p["v_supply"], "v_d1": p["v_zener"], "r7": p["v_cs"] / p["i_limit"], "r9": r9,
+            "r10": p["r10"], "r11": p["r11"], "r12": p["r12"], "r13": p["r13"], "r14": BOARD["R14"],
+            "vos": 0.0, "ibp": models.LM358["bias"], "ibn": models.LM358["bias"], "i_max": 2 * p["i_limit"]}
+
+
+def opamp_parts(p: dict) -> tuple[Part, ...]:
+    return (Part("VS", p["v_supply"], "V", "supply V_s"), Part("R7", p["r7"], "ohm", "sense resistor"),
+            Part("R9", p["r9"], "ohm", "sets the trip point"), Part("R10", p["r10"], "ohm", "reference divider"),
+            Part("R11", p["r11"], "ohm", "reference divider"), Part("R12", p["r12"], "ohm", "level shift"),
+            Part("R13", p["r13"], "ohm", "level shift"), Part("R14", p["r14"], "ohm", "D1's feed"),
+            Part("D1", "BZX79-C8V2", "", f"V_Z = {p['v_d1']:.4g} V at 5 mA"),
+            Part("U1", "LM358", "", f"offset {p['vos'] * 1e3:g} mV, bias {p['ibp'] * 1e9:g} / {p['ibn'] * 1e9:g} nA"),
+            Part("IM", p["i_max"], "A", "motor current, ramped from 0 to this value"))
+
+
+OPAMP_NODES = {"VS": "vs{s} 0", "R7": "vs{s} cs{s}", "R9": "vs{s} a{s}", "R10": "a{s} inn{s}",
+               "R11": "inn{s} z{s}", "R12": "cs{s} inp{s}", "R13": "inp{s} z{s}", "R14": "z{s} 0",
+               "D1": "z{s} vs{s} DZ{s} $ {v}", "U1": "inp{s} inn{s} vs{s} 0 out{s} {v} vos={vos} ibp={ibp} ibn={ibn}",
+               "IM": _ramp_nodes("csm")}
+
+
+def opamp_block(p: dict, sfx: str = "") -> tuple[list[str], list[str]]:
+    """(models, elements) of one op-amp limiter, node names ending in ``sfx`` (the LM358 subcircuit is shared)."""
+    u1 = {k: f"{p[k]:.6g}" for k in ("vos", "ibp", "ibn")}
+    lines = element_lines(opamp_parts(p), OPAMP_NODES, sfx, **u1)
+    lines += [f"VAM{sfx} cs{sfx} csm{sfx} 0", _probe(f"cs{sfx}", f"v(vs{sfx})-v(cs{sfx})"),
+              _probe(f"hp{sfx}", f"v(vs{sfx})-v(inp{sfx})"), _probe(f"hm{sfx}", f"v(vs{sfx})-v(inn{sfx})")]
+    return models.bzx79_c8v2(f"DZ{sfx}", p["v_d1"]), lines
+
+
+def _mid(p: dict) -> float:
+    """The middle of the LM358's output swing: where the output is taken to switch."""
+    return (p["v_supply"] - models.LM358["v_oh_drop"] + models.LM358["v_ol"]) / 2
+
+
+def _opamp_meas(sfx: str, mid: float, first_edge: str = "FALL=1") -> list[str]:
+    """The trip (output falls through ``mid``): V_cs and the motor current there; both headrooms at V_cs = 0."""
+    at = f"WHEN v(out{sfx})={mid:.6g} {first_edge}"
+    return [f".meas tran vcs_trip{sfx} FIND v(pcs{sfx}) {at}", f".meas tran i_trip{sfx} FIND i(VAM{sfx}) {at}",
+            f".meas tran head_p{sfx} FIND v(php{sfx}) AT={T0 / 2:g}",
+            f".meas tran head_m{sfx} FIND v(phm{sfx}) AT={T0 / 2:g}",
+            f".meas tran out0{sfx} FIND v(out{sfx}) AT={T0 / 2:g}"]
+
+
+def _opamp_deck(title: str, blocks: list[dict], stuck: str = "low", extra_meas=()) -> str:
+    models_, body, meas = models.lm358(stuck=stuck), [], []
+    for k, p in enumerate(blocks):
+        sfx = "" if k == 0 else f"_{k}"
+        m, lines = opamp_block(p, sfx)
+        models_ += m
+        body += lines
+        meas += _opamp_meas(sfx, _mid(p))
+    return _deck(title, models_, body, [*meas, *extra_meas])
+
+
+LAG = ("the equation leaves out the LM358's finite gain and 7 Hz pole (the output needs a few hundred "
+       "microvolts of overdrive and some time to reach mid-swing while the current ramps: about 0.5 %), "
+       "the zener's 15 ohm at the current it really carries instead of 5 mA (0.1 %) and the 500 nA bias "
+       "currents (about 0.1 %)")
+
+
+def opamp(p: dict | None = None) -> Circuit:
+    """AN94002 figure 3 with the note's values: the trip as the motor current ramps, and the level shift."""
+    p = {**opamp_defaults(), **(p or {})}
+    parts = opamp_parts(p)
+    eq_vcs = an94002.v_cs_trip(p["v_d1"], p["r9"], p["r10"], p["r11"], p["r12"], p["r13"], p["vos"])
+    checks = (
+        Check("limiter-opamp-shift", "V_s − V_+ at V_cs = 0 (eq 11: the level shift)", "V",
+              an94002.level_shift(p["v_d1"], p["r12"], p["r13"]), "head_p", 0.01,
+              "the bias current out of V+ through R12 || R13 (2 mV) and the zener's dynamic resistance (-0.1 %)"),
+        Check("limiter-opamp-vcs", "V_cs where the output switches (eq 13)", "V", eq_vcs, "vcs_trip", 0.01, LAG),
+        Check("limiter-opamp-itrip", "motor current where the output switches (eq 13 / R7)", "A", eq_vcs / p["r7"],
+              "i_trip", 0.01, LAG + "; R12's 0.4 mA also flows in R7 (0.04 %)"))
+    deck = _opamp_deck("AN94002 figure 3: op-amp limiter", [p])
+    return Circuit("limiter-opamp", "Op-amp current limiter", "AN94002 figure 3", parts, deck, checks,
+                   draw=lambda: draw_opamp(parts))
+
+
+def corner_defaults() -> dict:
+    """The note's network at the corner of least headroom of the design chapter's judgement: D1 at its lowest
+    (tolerance 6.1 % and drift, the design spec), R12 low and R13 high by their 1 %, bias 500 nA."""
+    from ..design import current_limiter as design
+    from ..design import limiter_network as net
+
+    s = design.checked({})
+    p = opamp_defaults()
+    t = s["resistor_tolerance"]
+    return {**p, "v_d1": net.zener_range(s)[0], "r12": p["r12"] * (1 - t), "r13": p["r13"] * (1 + t),
+            "ibp": s["input_bias"], "ibn": s["input_bias"], "spec": s}
+
+
+def trip_voltage(p: dict) -> float:
+    """V_cs at the trip with the offset and both bias currents: eq 13 (an94002.v_cs_trip) plus the bias terms
+    of the design's node equation, I_+ R12 - I_- ((R9 + R10) || R11) / A (limiter_network)."""
+    network = (p["r9"], p["r10"], p["r11"], p["r12"], p["r13"])
+    a = an94002.factor_a(p["r12"], p["r13"])
+    r_m = (p["r9"] + p["r10"]) * p["r11"] / (p["r9"] + p["r10"] + p["r11"])
+    return an94002.v_cs_trip(p["v_d1"], *network, p["vos"]) + p["ibp"] * p["r12"] - p["ibn"] * r_m / a
+
+
+def corner_equations(p: dict) -> dict:
+    """The corner's figures from the project's equations: least headroom of V+ (eq 11 with the bias, as the
+    design's limiter_network computes it), the sense voltage at which V+ comes back to 2 V below the supply,
+    and the trip eq 13 with the offset and bias (limiter_network's node equation)."""
+    from ..design import limiter_network as net
+
+    s = p["spec"]
+    r_p = p["r12"] * p["r13"] / (p["r12"] + p["r13"])
+    head0 = an94002.level_shift(p["v_d1"], p["r12"], p["r13"]) - p["ibp"] * r_p
+    a = an94002.factor_a(p["r12"], p["r13"])
+    v_back = (s["input_headroom"] - head0) / a
+    trip = trip_voltage(p)
+    nominal_net = tuple(opamp_defaults()[k] for k in ("r9", "r10", "r11", "r12", "r13"))
+    return {"head0": head0, "v_back": v_back, "trip": trip,
+            "design_head": float(min(net.headroom_corners(nominal_net, s)))}
+
+
+def opamp_corner(p: dict | None = None) -> Circuit:
+    """The note's network at its least-headroom corner: V+ starts 1.92 V below the supply, inside the LM358's
+    2 V; the model's output then sticks low (the limiter acts with no current) until V+ is back in range."""
+    p = {**corner_defaults(), **(p or {})}
+    parts, eq = opamp_parts(p), corner_equations(p)
+    mid = _mid(p)
+    back = [f".meas tran i_back FIND i(VAM) WHEN v(out)={mid:.6g} RISE=1"]
+    checks = (
+        Check("limiter-corner-headroom", "V_s − V_+ at V_cs = 0, least-headroom corner", "V", eq["design_head"],
+              "head_p", 0.01, "the design's worst-case headroom (limiter_network) at the same corner; SPICE keeps "
+              "the zener's dynamic resistance at its real current"),
+        Check("limiter-corner-back", "motor current where V+ is back 2 V below the supply (output rises)", "A",
+              eq["v_back"] / p["r7"], "i_back", 0.03,
+              "eq 11 with the bias solved for 2 V of headroom. Sensitive: 1 mV of headroom is 1.3 % of this current, "
+              "and SPICE's zener carries 5.25 mA here, 4 mV above its 5 mA figure (+1 mV of headroom), while the "
+              "model's change-over band lies in the last 1 mV below the limit"),
+        Check("limiter-corner-trip", "motor current where the output falls (node equation with bias)", "A",
+              eq["trip"] / p["r7"], "i_trip", 0.01,
+              "the node equation holds the offset and the bias currents; SPICE adds the LM358's finite gain and "
+              "pole while the current ramps (about 0.5 %) and the zener's 15 ohm at its real current (0.1 %)"))
+    deck = _opamp_deck("AN94002 figure 3 at its least-headroom corner", [p], extra_meas=back)
+    return Circuit("limiter-opamp-corner", "Op-amp limiter, least-headroom corner", "AN94002 figure 3", parts,
+                   deck, checks, draw=lambda: draw_opamp(parts))
+
+
+# ----------------------------------------------------------------------------------------------
+# (c) AN93008 figure 3: the supply-referenced limiter
+
+def supply_defaults() -> dict:
+    """AN93008's values; R7 = 100 mV over the limit AN94002's chapters use (AN93008 leaves it TBD)."""
+    p = an93008.params()
+    return {"v_supply": p["v_supply"], "v_low": p["v_supply"] * (1 - p["supply_tolerance"]),
+            "r7": p["v_cs"] / an94002.params()["i_limit"], "r8": p["r8"], "r9": p["r9"], "r10": p["r10"],
+            "r11": p["r11"], "vos": 0.0, "ibp": models.LM358["bias"], "ibn": models.LM358["bias"],
+            "i_max": 2 * an94002.params()["i_limit"]}
+
+
+def supply_parts(p: dict) -> tuple[Part, ...]:
+    return (Part("VS", p["v_supply"], "V", f"supply (a second copy runs at {p['v_low']:g} V)"),
+            Part("R7", p["r7"], "ohm", "sense resistor"), Part("R8", p["r8"], "ohm", "level shift, top"),
+            Part("R9", p["r9"], "ohm", "level shift, bottom"), Part("R10", p["r10"], "ohm", "reference, top"),
+            Part("R11", p["r11"], "ohm", "reference, bottom"),
+            Part("U1", "LM358", "", f"offset {p['vos'] * 1e3:g} mV, bias {p['ibp'] * 1e9:g} nA"),
+            Part("IM", p["i_max"], "A", "motor current, ramped from 0 to this value"))
+
+
+SUPPLY_NODES = {"VS": "vs{s} 0", "R7": "vs{s} cs{s}", "R8": "cs{s} inp{s}", "R9": "inp{s} 0", "R10": "vs{s} inn{s}",
+                "R11": "inn{s} 0", "U1": OPAMP_NODES["U1"], "IM": _ramp_nodes("csm")}
+
+
+def supply_referenced(p: dict | None = None) -> Circuit:
+    """AN93008 figure 3 at the nominal supply and at 12 V - 10 % (two copies in one run)."""
+    p = {**supply_defaults(), **(p or {})}
+    parts, body, meas = supply_parts(p), [], []
+    u1 = {k: f"{p[k]:.6g}" for k in ("vos", "ibp", "ibn")}
+    for sfx, v in (("", p["v_supply"]), ("_1", p["v_low"])):
+        lines = element_lines(parts, SUPPLY_NODES, sfx, **u1)
+        lines[0] = f"VS{sfx} vs{sfx} 0 {v:.6g}"
+        body += [*lines, f"VAM{sfx} cs{sfx} csm{sfx} 0", _probe(f"cs{sfx}", f"v(vs{sfx})-v(cs{sfx})"),
+                 _probe(f"hp{sfx}", f"v(vs{sfx})-v(inp{sfx})"), _probe(f"hm{sfx}", f"v(vs{sfx})-v(inn{sfx})"),
+                 _probe(f"vp{sfx}", f"v(inp{sfx})")]
+        meas += _opamp_meas(sfx, _mid({"v_supply": v}))
+    meas.append(f".meas tran vplus_1 FIND v(pvp_1) AT={T0 / 2:g}")
+
+    def trip(v):
+        return an93008.v_cs_trip(v, p["r8"], p["r9"], p["r10"], p["r11"], p["vos"])
+
+    a = an93008.factor_a(p["r8"], p["r9"])
+    checks = (
+        Check("limiter-supply-vcs", f"V_cs where the output switches, {p['v_supply']:g} V (eq 6)", "V",
+              trip(p["v_supply"]), "vcs_trip", 0.01, LAG.split(", the zener")[0] + " and the bias currents"),
+        Check("limiter-supply-vcs-low", f"V_cs where the output switches, {p['v_low']:g} V (eq 6)", "V",
+              trip(p["v_low"]), "vcs_trip_1", 0.01, LAG.split(", the zener")[0] + " and the bias currents"),
+        Check("limiter-supply-vplus", f"V_+ at V_cs = 0, {p['v_low']:g} V (eq 1: the note's 8.8 V)", "V",
+              a * p["v_low"], "vplus_1", 0.002, "the bias current out of V+ through R8 || R9 (3 mV of 8.8 V)"))
+    deck = _deck("AN93008 figure 3: supply-referenced limiter", models.lm358(), body, meas)
+    return Circuit("limiter-supply", "Supply-referenced op-amp limiter", "AN93008 figure 3", parts, deck, checks,
+                   draw=lambda: draw_supply(parts))
+
+
+def draw_one_transistor(parts):
+    from .limiter_drawings import one_transistor
+    return one_transistor(parts)
+
+
+def draw_opamp(parts):
+    from .limiter_drawings import opamp
+    return opamp(parts)
+
+
+def draw_supply(parts):
+    from .limiter_drawings import supply
+    return supply(parts)
+
+
+# ----------------------------------------------------------------------------------------------
+# waveforms for the chapters' plots
+
+def waveforms(circuit: Circuit, vectors: dict[str, str], points: int = 400) -> dict[str, np.ndarray]:
+    """The circuit's deck run once more with `wrdata` instead of `.meas`: {name: samples} of each vector
+    (ngspice expression) at ``points`` + 1 evenly spaced times of the simulation's own grid (``time`` added)."""
+    import tempfile
+    from pathlib import Path
+
+    keep = [ln for ln in circuit.netlist.splitlines() if not ln.lower().startswith(".meas") and ln.strip().lower() != ".end"]
+    with tempfile.TemporaryDirectory(prefix="handbook-wave-") as tmp:
+        out = Path(tmp) / "wave.txt"
+        deck = "\n".join([*keep, ".control", "run", "linearize", f"wrdata {out} " + " ".join(vectors.values()), "quit 0",
+                          ".endc", ".end"]) + "\n"
+        run(deck)
+        data = np.loadtxt(out)
+    pick = np.linspace(0, len(data) - 1, points + 1).round().astype(int)
+    cols = {"time": data[pick, 0]}
+    cols.update({name: data[pick, 2 * k + 1] for k, name in enumerate(vectors)})
+    return cols
+
+
+# ----------------------------------------------------------------------------------------------
+# a design confirmed: the chosen parts at their two worst corners
+
+def design_corners(result) -> tuple[dict, dict]:
+    """(lowest, highest) trip corner of a current-limiter design: every corner as tests/oracles.py's
+    limiter_corners builds them (each of R7, R9..R13 at either tolerance end, the zener at either end of its
+    tolerance and drift, the offset at either sign, the bias currents at each vertex of their polygon),
+    evaluated with :func:`trip_voltage`; each returned as :func:`opamp` parameters with ``i_eq``, the
+    equation's trip current there."""
+    from ..design import limiter_network as net
+
+    s = result.spec
+    t, ib, off = s["resistor_tolerance"], s["input_bias"], s["offset"]
+    ios = min(s["input_offset_current"], 2 * ib)
+    biases = [(g * a, g * b) for g in (-1, 1) for a, b in ((ib, ib), (ib, ib - ios), (ib - ios, ib))]
+    base = opamp_defaults()
+    lo = hi = None
+    for signs in itertools.product((-1, 1), repeat=6):
+        r = [x * (1 + tol * g) for x, g, tol in zip((result.r7, *result.network), signs, (s["r7_tolerance"],) + (t,) * 5)]
+        for vz, vos, (ibp, ibn) in itertools.product(net.zener_range(s), (-off, off), biases):
+            p = {**base, **dict(zip(("r7", "r9", "r10", "r11", "r12", "r13"), r)), "v_d1": vz, "vos": vos,
+                 "ibp": ibp, "ibn": ibn}
+            p["i_eq"] = trip_voltage(p) / p["r7"]
+            lo = p if lo is None or p["i_eq"] < lo["i_eq"] else lo
+            hi = p if hi is None or p["i_eq"] > hi["i_eq"] else hi
+    return lo, hi
+
+
+def design_check(result) -> dict:
+    """A current-limiter design (handbook.design.current_limiter) simulated at its two worst corners in one
+    run: {"i_trip_min", "i_trip_max"} from SPICE (A), beside the equations' values at the same corners."""
+    lo, hi = design_corners(result)
+    blocks = [{**c, "i_max": 1.5 * hi["i_eq"]} for c in (lo, hi)]
+    out = run(_opamp_deck("designed limiter at its two worst corners", blocks))
+    return {"i_trip_min": out["i_trip"], "i_trip_max": out["i_trip_1"], "i_trip_min_equation": lo["i_eq"],
+            "i_trip_max_equation": hi["i_eq"]}
+
+
+def chapter_table(*circuits):
+    """The chapters' "equation vs SPICE" table of one or more circuits (quantity, equation, SPICE, difference,
+    tolerance, verdict) with each tolerance's reason below it, as Markdown; or a line saying the SPICE
+    check was skipped and why when ngspice is missing."""
+    from IPython.display import Markdown
+
+    from ..report.tables import eng, table
+    from .circuit import evaluate
+    from .runner import SpiceUnavailable
+
+    try:
+        rows = [r for c in circuits for r in evaluate(c)]
+    except SpiceUnavailable as exc:
+        return Markdown(f"**SPICE check skipped:** {exc}.")
+    body = table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
+                 [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
+                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"±{r['rtol']:.1%}",
+                   "agrees" if r["agrees"] else "**differs**"] for r in rows])
+    why = "\n".join(f"- *{r['quantity']}*, ±{r['rtol']:.1%}: {r['why']}." for r in rows)
+    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)

@@ -1,0 +1,137 @@
+"""The speed-control loop of the TDA5144 board (AN94002 2.2): T1 (BD434) regulates V_mot, the IC's OTA
+compares the divided V_mot (R3, R4 on AMPIN+) with V_in (AMPIN-) and sinks T1's base current; R1 and C8
+stabilise the loop.
+
+The note's figure 1 was lost with the OCR, so the wiring around T1 is an assumption, stated here and in
+the chapter: AMP OUT drives T1's base directly; R2 (680 ohm, a part the text gives no role) pulls the
+base up to the emitter so that T1 is off when the OTA sinks nothing; R1 + C8 go from AMP OUT to ground;
+the jumper R7 of figure 1 is a wire; T1 is :func:`models.bd434` (assumed figures: no datasheet figure for
+the BD434 is in the project's sources); the motor is a resistor R_M (10 ohm, about 1 A at 10 V; a running
+motor is a back-EMF behind its winding resistance, which moves the operating point, not the divider).
+At DC C8 carries no current: the checks are DC operating points and do not test the loop's stability.
+
+The OTA (TDA5144 datasheet, June 1994, via datasheet_facts.md): transfer gain 0.3 S, sinks at most
+40 mA, cannot pull its output below its saturation voltage (1.5 V typ, 2.1 V max); its inputs draw no
+current. A behavioural current source: I_sink = g_m (V_AMPIN- - V_AMPIN+), clipped to 0 .. 40 mA.
+"""
+from __future__ import annotations
+
+from ..sources import an94002 as note
+from . import models
+from .circuit import Check, Circuit, Part
+from .runner import run
+from .timers import BOARD, element_lines, label
+
+#: OTA figures: transfer gain, largest sink current, output saturation typ and max (TDA5144 datasheet)
+OTA_GM, OTA_SINK, OTA_SAT = 0.3, 40e-3, (1.5, 2.1)
+R_MOTOR = 10.0  # ohm: the motor as a resistor (assumption: about 1 A at 10 V)
+
+
+def defaults() -> dict:
+    p = note.params()
+    return {**{k: p[k] for k in ("v_supply", "supply_tolerance", "v_drop_min", "r3", "r4", "v_mot_min")},
+            "r1": BOARD["R1"], "r2": BOARD["R2"], "c8": BOARD["C8"], "r_motor": R_MOTOR, "gm": OTA_GM,
+            "i_sink": OTA_SINK, "v_sat": OTA_SAT[0]}
+
+
+def _q(p: dict | None) -> dict:
+    base = defaults()
+    unknown = set(p or {}) - set(base)
+    if unknown:
+        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}")
+    return {**base, **(p or {})}
+
+
+def _parts(q: dict) -> tuple[Part, ...]:
+    v_s = q["v_supply"] * (1 - q["supply_tolerance"])
+    return (Part("V_S", v_s, "V", "the lowest supply, 12 V - 10 %"), Part("T1", "BD434", "", "series regulator"),
+            Part("R3", q["r3"], "ohm"), Part("R4", q["r4"], "ohm"), Part("R2", q["r2"], "ohm", "T1 base pull-up (assumed role)"),
+            Part("R1", q["r1"], "ohm"), Part("C8", q["c8"], "F"), Part("R_M", q["r_motor"], "ohm", "motor (assumed)"),
+            Part("GM", q["gm"], "S", "OTA transfer gain (TDA5144)"), Part("I_SINK", q["i_sink"], "A", "OTA sink limit"),
+            Part("V_SAT", q["v_sat"], "V", "OTA output saturation, typ"))
+
+
+NODES = {"V_S": "VS vs 0", "T1": "QT1 vmot base vs", "R3": "R3 vmot inp", "R4": "R4 inp 0", "R2": "R2 vs base",
+         "R1": "R1 base n1", "C8": "C8 n1 0", "R_M": "RM vmot 0"}
+
+
+def netlist(q: dict, parts, extra: tuple = ()) -> str:
+    lines = ["* speed control: T1, the OTA, R3/R4, R1/C8 (AN94002 2.2)", *models.bd434(), *element_lines(parts, NODES),
+             "VIN inm 0 0", "* the OTA: sinks g_m (AMPIN- - AMPIN+) from AMP OUT, 0 .. I_SINK, down to V_SAT",
+             "BOTA base 0 I = min(max(gm*(v(inm)-v(inp)),0),i_sink)*min(max((v(base)-v_sat)/0.05,0),1)",
+             ".dc VIN 0 3 0.005", *extra]
+    return "\n".join(lines) + "\n"
+
+
+def circuit(p: dict | None = None) -> Circuit:
+    """The loop at the lowest supply, V_in swept 0 to 3 V: V_mot at the two ends of the control range."""
+    q = _q(p)
+    parts = _parts(q)
+    lo_in, hi_in = note.v_in_range({**note.params(), **q})
+    v_top = note.v_mot_max(q["v_supply"], q["supply_tolerance"], q["v_drop_min"])
+    meas = [f".meas dc vmot_top FIND v(vmot) AT={hi_in:.6g}", f".meas dc vmot_low FIND v(vmot) AT={lo_in:.6g}",
+            f".meas dc vin_top WHEN v(vmot)={v_top:.6g} RISE=1", f".meas dc vce_top FIND par('v(vs)-v(vmot)') AT={hi_in:.6g}",
+            f".meas dc vmot_sat FIND v(vmot) AT={1.25 * hi_in:.6g}",
+            f".meas dc vdiff_top FIND par('v(inm)-v(inp)') AT={hi_in:.6g}"]
+    gain = ("the equation takes AMPIN+ = AMPIN- (infinite gain); the OTA needs I_sink / g_m of input difference "
+            "to sink T1's base current, about 2 % of V_mot with the assumed h_FE of 85 (models.bd434) and a 10 ohm motor")
+    checks = (
+        Check("speed-vmot-top", "V_mot at the top of the V_in range (lowest supply)", "V", v_top, "vmot_top", 0.04, gain),
+        Check("speed-vmot-low", "V_mot at the lowest running V_in", "V", q["v_mot_min"], "vmot_low", 0.04, gain),
+        Check("speed-vin-top", "V_in that gives the highest controllable V_mot (eq 10)", "V",
+              note.v_in_for(v_top, q["r3"], q["r4"]), "vin_top", 0.04, gain))
+    return Circuit("speed", "Speed-control loop", "AN94002 2.2, figure 1 (wiring assumed: the figure is lost)", parts,
+                   netlist(q, parts, tuple(meas)), checks, draw=lambda: draw(parts))
+
+
+def sweep(p: dict | None = None, points: int = 31) -> dict:
+    """V_mot and the OTA's input difference against V_in from the simulation, for the chapter's plot."""
+    q = _q(p)
+    parts = _parts(q)
+    v_in = [2.99 * k / (points - 1) for k in range(points)]
+    meas = [f".meas dc m{k} FIND v(vmot) AT={v:.6g}" for k, v in enumerate(v_in)]
+    out = run(netlist(q, parts, tuple(meas)))
+    return {"v_in": v_in, "v_mot": [out[f"m{k}"] for k in range(points)]}
+
+
+def draw(parts):
+    """V_S, T1 from V_S to V_mot, R3/R4 to AMPIN+, the OTA with V_in on AMPIN-, R2, R1 + C8, the motor."""
+    import schemdraw
+    import schemdraw.elements as elm
+
+    schemdraw.use("matplotlib")
+    by = {p.ref: label(p) for p in parts}
+    d = schemdraw.Drawing(show=False)
+    d.config(fontsize=10, unit=2.5)
+    t1 = d.add(elm.BjtPnp(circle=True).at((4, 4)).anchor("base").label(by["T1"], loc="right"))
+    d.add(elm.SourceV().at((-4.5, 0)).up().to((-4.5, 3)).label(by["V_S"]))
+    d.add(elm.Ground().at((-4.5, 0)))
+    d.add(elm.Line().at((-4.5, 3)).to((-4.5, 6)))
+    d.add(elm.Line().to((t1.emitter.x, 6)))
+    d.add(elm.Line().to(t1.emitter))
+    d.add(elm.Dot().at((3, 6)))
+    d.add(elm.Resistor().at((3, 6)).to((3, 4)).label(by["R2"], loc="bottom"))
+    d.add(elm.Line().at((0.08, 4)).to(t1.base))
+    d.add(elm.Dot().at((3, 4)))
+    vmot = (t1.collector.x, 2.5)
+    d.add(elm.Line().at(t1.collector).to(vmot))
+    d.add(elm.Dot().at(vmot).label("V_mot", loc="left"))
+    d.add(elm.Line().at(vmot).to((8, 2.5)))
+    d.add(elm.Resistor().down().to((8, 0)).label(by["R_M"]))
+    d.add(elm.Ground())
+    d.add(elm.Resistor().at(vmot).down().to((vmot[0], 0)).label(by["R3"]))
+    d.add(elm.Dot())
+    d.add(elm.Resistor().down().label(by["R4"], loc="bottom"))
+    d.add(elm.Ground())
+    ota = d.add(elm.Opamp(leads=True).left().anchor("in2").at((3.5, 0))
+                .label(f"OTA (output AMP OUT)\n{by['GM']}\n{by['I_SINK']}\n{by['V_SAT']}", loc="bottom", fontsize=8))
+    d.add(elm.Line().at(ota.in2).to((vmot[0], 0)).label("AMPIN+", loc="top", fontsize=8))
+    d.add(elm.Line().at(ota.in1).down(1.2))
+    d.add(elm.Dot(open=True).label("AMPIN- = V_in", loc="bottom", fontsize=8))
+    d.add(elm.Line().at(ota.out).to((ota.out.x, 4)))
+    d.add(elm.Dot().at((ota.out.x, 1.5)))
+    d.add(elm.Line().at((ota.out.x, 1.5)).to((-1.8, 1.5)))
+    d.add(elm.Resistor().down().label(by["R1"]))
+    d.add(elm.Capacitor().down().label(by["C8"]))
+    d.add(elm.Ground())
+    return d

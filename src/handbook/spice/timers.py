@@ -1,0 +1,339 @@
+"""The TDA5143/TDA5144 timers as the IC drives them (AN94002 2.1): CAP-ST (start oscillator), CAP-CD and
+CAP-DC (adaptive commutation delay, figure 4) and CAP-TI (watchdog).
+
+Each pin is a capacitor fed by the IC's switched current sources, which its comparators turn over at
+fixed levels. Currents and levels are the TDA5144 datasheet's (June 1994; ``datasheet_facts.md``);
+the IC's logic is modelled, not copied, and these are the assumptions:
+
+* a current source is an ideal behavioural source (``B ... I=``): no output resistance, no leakage;
+* the CAP-ST and CAP-TI comparators are one ngspice switch with hysteresis (``SW(VT, VH)``): it turns
+  on at the upper level and off at the lower one, with no delay;
+* the zero crossings of the back-EMF come from two gate sources (the IC's EMF comparators, not
+  modelled): CAP-CD charges from one zero crossing to the next, then sinks twice the current until it is
+  back at its low level (the commutation; AN94002 2.1.2); CAP-DC does the same one interval later;
+* a sink stops at the low level and a source at the high level over a 2 mV ramp (a clamp, so that the
+  solver sees no step); what the IC does above the high level the datasheet does not say.
+"""
+from __future__ import annotations
+
+from ..report.tables import eng
+from ..sources import an94002 as note
+from ..sources.an94002.parts import PARTS
+from .circuit import Check, Circuit, Part
+from .runner import run
+
+TDA5144 = "TDA5144 datasheet (June 1994), via datasheet_facts.md"
+#: CAP-CD discharge (sink) current and switching levels, min / typ / max (TDA5144 datasheet; the column
+#: pairing of its scrambled table is an interpretation, datasheet_facts.md)
+CD_SINK = (10.6e-6, 16.2e-6, 22e-6)
+CD_LOW = (0.80, 0.875, 0.90)
+CD_HIGH = (2.3, 2.4, 2.55)
+CLAMP = 2e-3  # V: width of the soft stop of a source at a level (assumption, see the module text)
+BOARD = {ref: value for ref, _, value, *_ in PARTS}
+
+
+def element_lines(parts, nodes: dict[str, str]) -> list[str]:
+    """One netlist line per part: ``<name> <nodes> <value>`` for a part placed in ``nodes`` (ref ->
+    "name nodes"), else ``.param <ref>=<value>`` for an IC figure the behavioural sources use."""
+    out = []
+    for p in parts:
+        value = p.value if isinstance(p.value, str) else f"{p.value:.6g}"
+        out.append(f"{nodes[p.ref]} {value}" if p.ref in nodes else f".param {p.ref.lower()}={value}")
+    return out
+
+
+def label(part: Part) -> str:
+    """A part as the drawing shows it: designator and value with its unit."""
+    return f"{part.ref} {part.value if isinstance(part.value, str) else eng(part.value, part.unit)}"
+
+
+def _with(defaults: dict, p: dict | None) -> dict:
+    unknown = set(p or {}) - set(defaults)
+    if unknown:
+        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}; known: {', '.join(sorted(defaults))}")
+    return {**defaults, **(p or {})}
+
+
+def _hysteresis(v_low: float, v_high: float) -> str:
+    """ngspice's switch turns on above VT + VH and off below VT - VH: the comparator's two levels."""
+    return f"SW(VT={(v_high + v_low) / 2:.6g} VH={(v_high - v_low) / 2:.6g} RON=1 ROFF=1e12)"
+
+
+def _soft(expr: str) -> str:
+    """0 .. 1 over the clamp width: a source's soft stop at a level."""
+    return f"min(max(({expr})/{CLAMP:g},0),1)"
+
+
+def _meas(*lines: str) -> list[str]:
+    return [".meas tran " + line for line in lines]
+
+
+# ----------------------------------------------------------------------------------------------
+# CAP-ST: start oscillator
+
+def start_defaults() -> dict:
+    levels = note.FACTS["cap_st_levels"].value
+    return {"cap_st": BOARD["C5"], "i_st": note.FACTS["cap_st_current"].value[1], "v_low": levels[0],
+            "v_high": levels[1]}
+
+
+def start_oscillator(p: dict | None = None) -> Circuit:
+    """CAP-ST (C5) charged and discharged at I_ST between the TDA5144's two levels (0.20 V, 2.20 V)."""
+    q = _with(start_defaults(), p)
+    parts = (Part("C5", q["cap_st"], "F", "CAP-ST"),
+             Part("I_ST", q["i_st"], "A", "CAP-ST charge = discharge current, typ (TDA5144)"),
+             Part("V_LOW", q["v_low"], "V", "CAP-ST lower level (TDA5144)"),
+             Part("V_HIGH", q["v_high"], "V", "CAP-ST upper level (TDA5144)"))
+    period = note.start_period(q["cap_st"], q["i_st"], q["v_low"], q["v_high"])
+    mid = (q["v_low"] + q["v_high"]) / 2
+    lines = ["* CAP-ST start oscillator (TDA5144, AN94002 2.1.1)", *element_lines(parts, {"C5": "C5 st 0"}),
+             "* comparator: a switch with hysteresis sets q = 1 (discharge) at V_HIGH, q = 0 at V_LOW",
+             "VDD vdd 0 1", "SCMP vdd q st 0 swst OFF", "RQ q 0 1e6",
+             f".model swst {_hysteresis(q['v_low'], q['v_high'])}",
+             "BST 0 st I = i_st*(1-2*v(q))", f".ic v(st)={q['v_low']:.6g}",
+             f".tran {period / 2000:.6g} {3.6 * period:.6g} 0 {period / 2000:.6g} uic",
+             *_meas(f"t1 WHEN v(st)={mid:.6g} RISE=2", f"t2 WHEN v(st)={mid:.6g} RISE=3", "period PARAM='t2-t1'",
+                    f"tdown WHEN v(st)={mid:.6g} FALL=2", "rise_time PARAM='tdown-t1'")]
+    why = ("the model switches at a time step after the level is crossed (step = period / 2000); the equation "
+           "switches exactly at the level")
+    checks = (Check("start-period", "start period (TDA5144 levels)", "s", period, "period", 0.005, why),
+              Check("start-ramp-up", "time from mid-window up and back to mid-window (half a period)", "s",
+                    period / 2, "rise_time", 0.005, why + "; charge and discharge at the same current"))
+    return Circuit("cap-st", "CAP-ST start oscillator", "AN94002 2.1.1; TDA5144 datasheet", parts,
+                   "\n".join(lines) + "\n", checks, draw=lambda: draw_timer(parts, "CAP-ST"))
+
+
+# ----------------------------------------------------------------------------------------------
+# CAP-CD / CAP-DC: adaptive commutation delay
+
+def commutation_defaults() -> dict:
+    from ..design.schema import defaults
+
+    p = note.params()
+    return {"cap_cd": BOARD["C3"], "cap_dc": BOARD["C4"], "pole_pairs": p["pole_pairs"], "rpm_min": p["rpm_min"],
+            "rpm_max": defaults("commutation")["rpm_max"], "i_ch": note.FACTS["cap_cd_charge"].value[1],
+            "i_dis": CD_SINK[1], "v_low": CD_LOW[1], "v_high": CD_HIGH[1], "cycles": 3}
+
+
+def _pwl(times: list[float], levels: list[int], rise: float) -> str:
+    pts = [(0.0, levels[0])]
+    for t0, t1, lvl in zip(times[:-1], times[1:], levels):
+        pts += [(t0 + rise, lvl), (t1, lvl)] if t0 > 0 else [(t1, lvl)]
+    return "PWL(" + " ".join(f"{t:.9g} {v}" for t, v in pts) + ")"
+
+
+def zero_crossings(segments: list[tuple[float, int]]) -> list[float]:
+    """Times of the back-EMF zero crossings for [(t_com, intervals)]: one every t_com."""
+    times = [0.0]
+    for tc, n in segments:
+        times += [times[-1] + tc * (k + 1) for k in range(n)]
+    return times
+
+
+def timer_source(name: str, node: str, gate: str, i_ch: str, i_dis: str, v_low: str, v_high: str) -> str:
+    """One commutation timer: charge while the gate is high (stopping at v_high), sink i_dis while it is low
+    (stopping at v_low, the commutation)."""
+    return (f"B{name} 0 {node} I = {i_ch}*v({gate})*{_soft(f'{v_high}-v({node})')}"
+            f" - {i_dis}*(1-v({gate}))*{_soft(f'v({node})-{v_low}')}")
+
+
+def _cd_netlist(q: dict, parts, extra: tuple = ()) -> tuple[str, dict]:
+    n = q["pole_pairs"]
+    tc = {"min": note.t_com(q["rpm_min"], n), "max": note.t_com(q["rpm_max"], n)}
+    k = 2 * q["cycles"]
+    zc = zero_crossings([(tc["min"], k), (tc["max"], k)])
+    rise = tc["max"] / 1000
+    levels = [(i + 1) % 2 for i in range(2 * k)]
+    at = {"min": 2 * tc["min"], "max": zc[k] + 2 * tc["max"]}  # start of the second cycle of each speed
+    v_hit = f"{q['v_low'] + CLAMP:.6g}"
+    lines = ["* CAP-CD / CAP-DC adaptive commutation delay (TDA5144, AN94002 2.1.2, figure 4)",
+             *element_lines(parts, {"C3": "C3 cd 0", "C4": "C4 dc 0"}),
+             "* zero crossings of the back-EMF (the IC's EMF comparators, not modelled): gate high = charge",
+             f"VGCD gcd 0 {_pwl(zc, levels, rise)}", f"VGDC gdc 0 {_pwl(zc, [1 - v for v in levels], rise)}",
+             timer_source("CD", "cd", "gcd", "i_ch", "i_dis", "v_low", "v_high"),
+             timer_source("DC", "dc", "gdc", "i_ch", "i_dis", "v_low", "v_high"),
+             f".ic v(cd)={q['v_low']:.6g} v(dc)={q['v_low']:.6g}",
+             f".tran {rise:.6g} {zc[-1]:.9g} 0 {tc['max'] / 400:.6g} uic"]
+    for s in ("min", "max"):
+        t0, t1 = at[s], at[s] + 2 * tc[s]
+        lines += _meas(f"cdhi_{s} MAX v(cd) FROM={t0:.9g} TO={t1:.9g}", f"cdlo_{s} MIN v(cd) FROM={t0:.9g} TO={t1:.9g}",
+                       f"swing_{s} PARAM='cdhi_{s}-cdlo_{s}'",
+                       f"dchi_{s} MAX v(dc) FROM={t0:.9g} TO={t1 + tc[s]:.9g}",
+                       f"dcswing_{s} PARAM='dchi_{s}-{q['v_low']:.6g}'",
+                       f"tcom_{s} WHEN v(cd)={v_hit} FALL=1 FROM={t0 + tc[s]:.9g}",
+                       f"delay_{s} PARAM='tcom_{s}-{t0 + tc[s]:.9g}'")
+    return "\n".join([*lines, *extra]) + "\n", {"tc": tc, "zc": zc}
+
+
+def commutation_delay(p: dict | None = None) -> Circuit:
+    """C3 (CAP-CD) and C4 (CAP-DC) driven by the TDA5144's typical currents, ``cycles`` electrical cycles at
+    rpm_min and then at rpm_max."""
+    q = _with(commutation_defaults(), p)
+    parts = (Part("C3", q["cap_cd"], "F", "CAP-CD"), Part("C4", q["cap_dc"], "F", "CAP-DC"),
+             Part("I_CH", q["i_ch"], "A", "charge (source) current, typ (TDA5144)"),
+             Part("I_DIS", q["i_dis"], "A", "discharge (sink) current, typ (TDA5144)"),
+             Part("V_LOW", q["v_low"], "V", "low level, typ (TDA5144)"),
+             Part("V_HIGH", q["v_high"], "V", "high level, typ (TDA5144)"))
+    netlist, _ = _cd_netlist(q, parts)
+    n = q["pole_pairs"]
+    ratio = q["i_ch"] / q["i_dis"]
+    swing_why = ("charge balance is exact; the gate's edges take t_com / 1000 and the model's time step is "
+                 "t_com / 400 at rpm_max")
+    delay_why = ("the equation's half interval holds for a sink of exactly twice the charge current (8.1 and "
+                 "16.2 uA typ); the simulation times the fall to 2 mV above the low level, where its clamp begins")
+    checks = tuple(
+        Check(f"cd-swing-{s}", f"CAP-CD swing at {q[f'rpm_{s}']:g} rpm", "V",
+              note.excursion(q["cap_cd"], q[f"rpm_{s}"], n, q["i_ch"]), f"swing_{s}", 0.01, swing_why)
+        for s in ("min", "max")) + (
+        Check("dc-swing-min", f"CAP-DC swing at {q['rpm_min']:g} rpm", "V",
+              note.excursion(q["cap_dc"], q["rpm_min"], n, q["i_ch"]), "dcswing_min", 0.01, swing_why),
+        Check("cd-delay-min", f"commutation delay after the zero crossing at {q['rpm_min']:g} rpm", "s",
+              note.t_com(q["rpm_min"], n) * ratio, "delay_min", 0.01, delay_why),
+        Check("cd-delay-max", f"commutation delay after the zero crossing at {q['rpm_max']:g} rpm", "s",
+              note.t_com(q["rpm_max"], n) * ratio, "delay_max", 0.01, delay_why))
+    return Circuit("cap-cd", "CAP-CD / CAP-DC adaptive commutation delay", "AN94002 2.1.2, figure 4; TDA5144 datasheet",
+                   parts, netlist, checks, draw=lambda: draw_timer(parts, "CAP-CD / CAP-DC"))
+
+
+def commutation_waveforms(p: dict | None = None, points: int = 400) -> dict:
+    """Figure 4 from the simulation: CAP-CD and CAP-DC sampled at ``points`` times (.meas FIND AT), with the
+    zero crossings. {"t": [...], "cd": [...], "dc": [...], "zc": [...], "tc": {...}}."""
+    q = _with(commutation_defaults(), p)
+    c = commutation_delay(q)
+    _, info = _cd_netlist(q, c.parts)
+    end = info["zc"][-1]
+    times = [end * (k + 0.5) / points for k in range(points)]
+    extra = _meas(*(f"w{node}{k} FIND v({node}) AT={t:.9g}" for k, t in enumerate(times) for node in ("cd", "dc")))
+    netlist, _ = _cd_netlist(q, c.parts, extra)
+    out = run(netlist)
+    return {"t": times, "cd": [out[f"wcd{k}"] for k in range(points)], "dc": [out[f"wdc{k}"] for k in range(points)],
+            "zc": info["zc"], "tc": info["tc"]}
+
+
+def design_check(result) -> dict:
+    """A commutation design at its two worst corners: CAP-CD at rpm_min with the largest charge current and
+    the smallest capacitor, at rpm_max with the smallest current and the largest capacitor (each sinking
+    twice its charge current, stopping at the narrowest window's levels). {"swing_rpm_min", "swing_rpm_max"}."""
+    s, c = result.spec, result.cap_cd
+    corners = {"min": (s["i_charge_max"], c * (1 - s["tolerance"])), "max": (s["i_charge_min"], c * (1 + s["tolerance"]))}
+    lines = ["* commutation design at its worst corners", f".param v_low={s['v_low_max']:.6g} v_high={s['v_high_min']:.6g}"]
+    end = 0.0
+    for name, (i_ch, cap) in corners.items():
+        tc = note.t_com(s[f"rpm_{name}"], s["pole_pairs"])
+        zc = zero_crossings([(tc, 4)])
+        end = max(end, zc[-1])
+        lines += [f"C{name} n{name} 0 {cap:.6g}", f"VG{name} g{name} 0 {_pwl(zc, [1, 0, 1, 0], tc / 1000)}",
+                  timer_source(name, f"n{name}", f"g{name}", f"{i_ch:.6g}", f"{2 * i_ch:.6g}", "v_low", "v_high"),
+                  f".ic v(n{name})={s['v_low_max']:.6g}",
+                  *_meas(f"hi_{name} MAX v(n{name}) FROM={2 * tc:.9g} TO={4 * tc:.9g}",
+                         f"lo_{name} MIN v(n{name}) FROM={2 * tc:.9g} TO={4 * tc:.9g}", f"sw_{name} PARAM='hi_{name}-lo_{name}'")]
+    step = min(note.t_com(s[f"rpm_{k}"], s["pole_pairs"]) for k in corners) / 400
+    out = run("\n".join([*lines, f".tran {step:.6g} {end:.9g} 0 {step:.6g} uic"]) + "\n")
+    return {"swing_rpm_min": out["sw_min"], "swing_rpm_max": out["sw_max"]}
+
+
+# ----------------------------------------------------------------------------------------------
+# CAP-TI: watchdog
+
+def watchdog_defaults() -> dict:
+    p = note.params()
+    return {k: p[k] for k in ("cap_ti", "i_ti_fast", "i_wd", "i_ti_discharge", "v_ti_start", "v_ti_low", "v_ti_high")}
+
+
+def watchdog(p: dict | None = None) -> Circuit:
+    """C6 (CAP-TI): one stalled cycle (the ramp reaches 2.2 V, the watchdog fires, 28 uA back to 0.2 V), then
+    one in which the EMF recovers half-way up the ramp (the discharge starts there)."""
+    q = _with(watchdog_defaults(), p)
+    parts = (Part("C6", q["cap_ti"], "F", "CAP-TI"),
+             Part("I_FAST", q["i_ti_fast"], "A", "internal timing charge, 0.2 to 0.3 V (TDA5144)"),
+             Part("I_WD", q["i_wd"], "A", "watchdog charge, 0.3 to 2.2 V (TDA5144)"),
+             Part("I_TIDIS", q["i_ti_discharge"], "A", "discharge (TDA5144)"),
+             Part("V_START", q["v_ti_start"], "V", "level after discharge"),
+             Part("V_WDLOW", q["v_ti_low"], "V", "end of the fast step"),
+             Part("V_WDHIGH", q["v_ti_high"], "V", "watchdog threshold"))
+    t_s, _ = note.cap_ti_waveform(q["cap_ti"], q, stalled=True)
+    t_r, _ = note.cap_ti_waveform(q["cap_ti"], q, stalled=False)
+    t_emf = t_s[3] + t_r[2]  # the EMF recovers in the second cycle where the equation's ramp turns over
+    charge = "(v(ti)<v_wdlow ? i_fast : i_wd)"
+    dt = min(t_s[3] / 4000, t_s[1] / 40)  # the fast step needs a step well below its 18 us
+    lines = ["* CAP-TI watchdog (TDA5144, AN94002 2.1.3)", *element_lines(parts, {"C6": "C6 ti 0"}),
+             "* comparator with hysteresis: q = 1 (discharge) from V_WDHIGH down to V_START",
+             "VDD vdd 0 1", "SCMP vdd q ti 0 swti OFF", "RQ q 0 1e6",
+             f".model swti {_hysteresis(q['v_ti_start'], q['v_ti_high'])}",
+             f"VEMF emf 0 PWL(0 0 {t_emf:.9g} 0 {t_emf * 1.0001:.9g} 1)",
+             f"BTI 0 ti I = (1-v(q))*(1-v(emf))*{charge} - v(q)*(1-v(emf))*i_tidis"
+             f" - v(emf)*i_tidis*{_soft('v(ti)-v_start')}",
+             f".ic v(ti)={q['v_ti_start']:.6g}",
+             f".tran {dt:.6g} {(t_s[3] + t_r[3]) * 1.05:.9g} 0 {dt:.6g} uic",
+             *_meas(f"t_low WHEN v(ti)={q['v_ti_low']:.6g} RISE=1", "t_top WHEN v(q)=0.5 RISE=1",
+                    "t_wd PARAM='t_top-t_low'", "t_end WHEN v(q)=0.5 FALL=1",
+                    f"t_rec WHEN v(ti)={q['v_ti_start'] + CLAMP:.6g} FALL=1 FROM={t_s[3] * 1.01:.9g}",
+                    "rec_cycle PARAM='t_rec-t_end'")]
+    step = ("the comparator and the 57 uA / 5 uA change act within one time step (fast step / 40); the equation "
+            "switches exactly at the level")
+    checks = (
+        Check("wd-fast", "internal timing step, 0.2 V to 0.3 V", "s", t_s[1], "t_low", 0.02, step),
+        Check("wd-time", "watchdog time, 0.3 V to 2.2 V at 5 uA", "s", note.watchdog_time(q["cap_ti"], q["i_wd"],
+              q["v_ti_low"], q["v_ti_high"]), "t_wd", 0.005, step),
+        Check("wd-stalled-cycle", "stalled cycle: up to 2.2 V and back to 0.2 V", "s", t_s[3], "t_end", 0.005, step),
+        Check("wd-recovered-cycle", "cycle with the EMF recovering half-way up the ramp", "s", t_r[3], "rec_cycle",
+              0.01, step + "; its discharge ends 2 mV above 0.2 V, where the clamp begins"))
+    return Circuit("cap-ti", "CAP-TI watchdog", "AN94002 2.1.3, figure 5; TDA5144 datasheet", parts,
+                   "\n".join(lines) + "\n", checks, draw=lambda: draw_timer(parts, "CAP-TI"))
+
+
+# ----------------------------------------------------------------------------------------------
+# schematic
+
+def draw_timer(parts, pin: str):
+    """The IC's sources on the pin (left), the board's capacitor(s) to ground, the comparator levels."""
+    import schemdraw
+    import schemdraw.elements as elm
+
+    schemdraw.use("matplotlib")
+    caps = [p for p in parts if p.unit == "F"]
+    sources = [p for p in parts if p.unit == "A"]
+    levels = [p for p in parts if p.unit == "V"]
+    d = schemdraw.Drawing(show=False)
+    d.config(fontsize=10, unit=2.5)
+    width = 4.2 * len(sources) + 5.0
+    for i, cap in enumerate(caps):
+        d.move(width * i - d.here[0], -d.here[1])
+        pin_dot = d.add(elm.Dot(open=True).label(pin.split(" / ")[i], loc="bottom"))
+        for j, src in enumerate(sources):
+            d.move_from(pin_dot.center)
+            d.add(elm.Line().left(4.2 * j + 1.0))
+            source = elm.SourceI().down().label(label(src), loc="top", fontsize=9)
+            d.add(source.reverse() if "discharge" not in src.note else source)  # a charge source points up
+            d.add(elm.Ground())
+        d.move_from(pin_dot.center)
+        d.add(elm.Line().right(1.5))
+        d.add(elm.Capacitor().down().label(label(cap), loc="bottom"))
+        d.add(elm.Ground())
+        d.move_from(pin_dot.center)
+        d.add(elm.Line().up(1.2))
+        d.add(elm.Opamp(leads=True).right().anchor("in2").label("comparator\n" + "\n".join(label(v) for v in levels),
+                                                                loc="right", fontsize=9))
+    return d
+
+
+# ----------------------------------------------------------------------------------------------
+# the chapters' "equation vs SPICE" table
+
+def chapter_table(circuit):
+    """The chapter's table (quantity, equation, SPICE, difference, tolerance, verdict) as Markdown, or a line
+    saying the SPICE check was skipped and why when ngspice is missing."""
+    from IPython.display import Markdown
+
+    from ..report.tables import table
+    from .circuit import evaluate
+    from .runner import SpiceUnavailable
+
+    try:
+        rows = evaluate(circuit)
+    except SpiceUnavailable as exc:
+        return Markdown(f"**SPICE check skipped:** {exc}.")
+    return table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
+                 [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
+                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"{r['rtol']:.1%}",
+                   "agrees" if r["agrees"] else "**differs**"] for r in rows])

@@ -1,0 +1,89 @@
+"""The LM4651/LM4652 bridge output filter with its load: the drawing and the netlist carry the same parts,
+and ngspice agrees with the book's filter model (corner, Q, band, switching residue) within the stated
+tolerances, for 4 and 8 ohm loads and for a class-D design."""
+import math
+import re
+
+import pytest
+
+from handbook.sources.lm4651 import circuit as eqs
+from handbook.spice import class_d
+from handbook.spice.circuit import evaluate
+from handbook.spice.runner import available, why_unavailable
+
+BUILT = (class_d.circuit, class_d.circuit_8ohm, class_d.ripple, class_d.ripple_8ohm)
+
+
+@pytest.fixture(scope="module")
+def ngspice():
+    if available() is None:
+        pytest.skip(why_unavailable())
+
+
+def _labels(drawing) -> list[str]:
+    return [lab.label for element in drawing.elements for lab in element._userlabels]
+
+
+def _line(netlist: str, ref: str) -> list[str]:
+    lines = [ln.split() for ln in netlist.splitlines() if ln.split()[:1] == [ref]]
+    assert len(lines) == 1, f"{ref}: {len(lines)} netlist lines"
+    return lines[0]
+
+
+@pytest.mark.parametrize("build", BUILT)
+def test_drawing_and_netlist_have_the_same_parts(build):
+    c = build()
+    labels = _labels(c.draw())
+    drawn = {lab.split()[0] for lab in labels if re.match(r"^[A-Z]+[_0-9A-Z]* ", lab)}
+    assert drawn == {p.ref for p in c.parts}
+    for p in c.parts:
+        assert class_d.label(p) in labels
+        words = _line(c.netlist, p.ref)
+        if p.ref.startswith("VO"):  # a +-V_s square: PULSE(v1 v2 ...)
+            v1, v2 = (float(w) for w in " ".join(words[3:]).removeprefix("PULSE(").split()[:2])
+            assert abs(v1) == pytest.approx(p.value) and v2 == pytest.approx(-v1)
+        else:
+            assert float(words[3]) == pytest.approx(p.value, rel=1e-6)
+
+
+def test_defaults_are_the_datasheets():
+    p = {q.ref: q.value for q in class_d.circuit().parts}
+    assert (p["L1"], p["L2"], p["C_BYP"], p["R_L"], p["VO1"]) == (50e-6, 50e-6, 5e-6, 4.0, 20.0)
+    assert class_d.circuit_8ohm().part("R_L").value == 8.0
+    with pytest.raises(KeyError, match="unknown parameter"):
+        class_d.circuit({"l_typo": 1e-6})
+
+
+@pytest.mark.parametrize("build", BUILT)
+def test_every_check_agrees_within_its_tolerance(ngspice, build):
+    c = build()
+    assert len(c.checks) >= 1
+    for row in evaluate(c):
+        assert row["agrees"], f"{row['id']}: equation {row['equation']:.6g}, SPICE {row['spice']:.6g}, {row['why']}"
+
+
+def test_the_filter_model_has_two_checks_or_more_per_load(ngspice):
+    assert len(class_d.circuit().checks) + len(class_d.ripple().checks) >= 2
+
+
+def test_response_follows_the_model_for_both_loads(ngspice):
+    got = class_d.response(points=9)
+    for r in (4.0, 8.0):
+        model = [10 * math.log10(eqs.filter_gain2(f, eqs.L_REF, eqs.C_REF, r)) for f in got["f"]]
+        assert list(got[r]) == pytest.approx(model, abs=1e-3)
+
+
+def test_a_class_d_design_is_confirmed(ngspice):
+    from types import SimpleNamespace
+
+    from handbook.design import class_d_model as model
+
+    spec = {"r_load": 4.0, "supply": 20.0, "f_audio": 500.0, "osc_tol_slow": 0.2, "osc_tol_fast": 0.235,
+            "l_tolerance": 0.1, "c_tolerance": 0.05}
+    result = SimpleNamespace(spec=spec, l_out=220e-6, c_out=22e-6, f_sw=77.16e3)
+    out = class_d.design_check(result)
+    assert set(out) == {"f_corner", "ripple_at_load"}
+    assert out["f_corner"] == pytest.approx(eqs.filter_f0(220e-6, 22e-6), rel=5e-3)
+    fo, lo, co = model.corner_factors(spec)
+    worst = max(eqs.ripple_rms(77.16e3 * a, 220e-6 * b, 22e-6 * c, 4.0, 20.0) for a, b, c in zip(fo, lo, co))
+    assert out["ripple_at_load"] == pytest.approx(worst, rel=0.02)

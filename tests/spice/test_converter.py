@@ -1,0 +1,73 @@
+"""The TCA5600 converter's power stage: the drawing and the netlist carry the same parts, and ngspice
+agrees with eq 1 to 6a (peak current, t1, t2, frequency, current delivered) within the stated tolerances,
+for figure 13's L1 and R1 and for the L1 and R1 that eq 3 to 6a design."""
+import re
+
+import pytest
+
+from handbook.sources import tca5600
+from handbook.spice import converter
+from handbook.spice.circuit import evaluate
+from handbook.spice.runner import available, why_unavailable
+
+
+@pytest.fixture(scope="module")
+def ngspice():
+    if available() is None:
+        pytest.skip(why_unavailable())
+
+
+def _labels(drawing) -> list[str]:
+    return [lab.label for element in drawing.elements for lab in element._userlabels]
+
+
+def _value(netlist: str, name: str, index: int = -1) -> float:
+    lines = [ln.split() for ln in netlist.splitlines() if ln.split()[:1] == [name]]
+    assert len(lines) == 1, f"{name}: {len(lines)} netlist lines"
+    return float(lines[0][index])
+
+
+def test_drawing_and_netlist_have_the_same_parts():
+    c = converter.circuit()
+    labels = _labels(c.draw())
+    assert {lab.split()[0] for lab in labels if re.match(r"^[A-Z]+[0-9]+ ", lab)} == {p.ref for p in c.parts}
+    for p in c.parts:
+        assert converter.label(p) in labels
+    v = {p.ref: p.value for p in c.parts}
+    for name, ref in (("VCC2", "VCC2"), ("L1", "L1"), ("R1", "R1"), ("VS1", "S1"), ("VC2", "VC2")):
+        assert _value(c.netlist, name) == pytest.approx(v[ref], rel=1e-6)
+    assert f"V={v['U1']:.6g}-(v(e)+{v['R1']:.6g}*i(VD1))" in c.netlist  # the comparator's threshold
+    i_s = float(re.search(r"\.model D_D1 D\(IS=(\S+) N=1\)", c.netlist).group(1))  # D1 drops V_F at I_peak / 2
+    assert converter.diode_is(v["D1"], v["U1"] / v["R1"] / 2) == pytest.approx(i_s, rel=1e-5)
+
+
+def test_defaults_are_figure_13s_and_the_chapters():
+    p = {q.ref: q.value for q in converter.circuit().parts}
+    assert (p["L1"], p["R1"]) == (tca5600.APPLICATION["l1"], tca5600.APPLICATION["r1"])
+    d = tca5600.params()
+    assert (p["VCC2"], p["S1"], p["D1"], p["U1"], p["VC2"]) == (
+        d["v_cc2_min"], d["vce_sat"], d["v_f"], d["v12h"], d["v_out2"] + d["regulator_drop"])
+
+
+def test_every_check_agrees_within_its_tolerance(ngspice):
+    rows = evaluate(converter.circuit())
+    assert len(rows) >= 2
+    for row in rows:
+        assert row["agrees"], f"{row['id']}: equation {row['equation']:.6g}, SPICE {row['spice']:.6g}, {row['why']}"
+
+
+def test_the_designed_coil_carries_the_load_at_the_chosen_frequency(ngspice):
+    p = tca5600.params()
+    d = tca5600.design(p)
+    rows = {r["id"]: r for r in evaluate(converter.circuit({"l1": d["l1"], "r1": d["r1"]}))}
+    assert all(r["agrees"] for r in rows.values())
+    assert rows["tca5600-iout"]["spice"] == pytest.approx(p["i_out2"], rel=0.05)
+    assert rows["tca5600-f"]["spice"] == pytest.approx(p["f_min"], rel=0.05)
+
+
+def test_waveform_is_figure_14s_triangle(ngspice):
+    w = converter.waveform(points=61)
+    peak = tca5600.operating_point(tca5600.APPLICATION["l1"], tca5600.APPLICATION["r1"], tca5600.params())["i_peak"]
+    assert w["i"].max() == pytest.approx(peak, rel=0.02)  # 61 points: the sampled peak is a little low
+    assert w["i"].min() >= -1e-3 and w["i"].min() < 0.02 * peak  # back to zero each cycle
+    assert w["v"].max() > 0 > w["v"].min()  # V_L- while charging, -V_L+ while dumping
