@@ -16,7 +16,11 @@ def _glued(nb_path):
             data = o.get("data", {})
             name = o.get("metadata", {}).get("scrapbook", {}).get("name")
             if name:
-                out[name] = float("".join(data["application/papermill.record/text/plain"]))
+                text = "".join(data["application/papermill.record/text/plain"])
+                try:
+                    out[name] = float(text)
+                except ValueError:  # a glued text (a value with its unit): kept as written
+                    out[name] = text.strip("'\"")
             if "text/markdown" in data:
                 tables.append("".join(data["text/markdown"]))
     return out, "\n".join(tables)
