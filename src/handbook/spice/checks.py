@@ -42,4 +42,23 @@ def confirm(results: dict) -> dict:
     return out
 
 
-__all__ = ["SpiceError", "SpiceUnavailable", "available", "circuits", "confirm", "rows", "why_unavailable"]
+def confirm_rows(table: str, result) -> list[dict]:
+    """The design's own worst-case figures beside the simulation's, for the design chapters: rows of
+    (quantity, unit, equation, spice, rel_diff)."""
+    sim = confirm({table: result})[table]
+    if table == "commutation":
+        pairs = [("swing at rpm_min (largest current, smallest capacitor)", "V", result.swing_at_rpm_min, "swing_rpm_min"),
+                 ("swing at rpm_max (smallest current, largest capacitor)", "V", result.swing_at_rpm_max, "swing_rpm_max")]
+    elif table == "current_limiter":
+        pairs = [("lowest trip current (its worst corner)", "A", result.i_trip_min, "i_trip_min"),
+                 ("highest trip current (its worst corner)", "A", result.i_trip_max, "i_trip_max")]
+    else:
+        from ..sources.lm4651.circuit import filter_f0
+
+        pairs = [("output filter corner with the load", "Hz", filter_f0(result.l_out, result.c_out), "f_corner"),
+                 ("switching residue at the load, rms (worst corner)", "V", result.figures["ripple"], "ripple_at_load")]
+    return [{"quantity": q, "unit": u, "equation": float(eq), "spice": float(sim[key]),
+             "rel_diff": abs(float(sim[key]) - float(eq)) / abs(float(eq))} for q, u, eq, key in pairs]
+
+
+__all__ = ["SpiceError", "SpiceUnavailable", "available", "circuits", "confirm", "confirm_rows", "rows", "why_unavailable"]
