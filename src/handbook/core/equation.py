@@ -67,7 +67,13 @@ def latex(expr) -> str:
     expr = sp.sympify(expr)
     exponents = {a for pw in expr.atoms(sp.Pow) for a in pw.exp.atoms(sp.Rational)}
     swap = {r: _decimal(r) for r in expr.atoms(sp.Rational) - exponents if r.q not in (1, 2, 4)}
+    # a physical constant of sympy.physics.units prints as its name (\text{vacuum_permittivity}): its symbol
+    swap.update({q: sp.Symbol(_CONSTANT_TEX[q.name.name]) for q in expr.atoms(u.Quantity)
+                 if q.name.name in _CONSTANT_TEX})
     return sp.latex(expr.xreplace(swap))
+
+
+_CONSTANT_TEX = {"vacuum_permittivity": r"\varepsilon_0", "vacuum_permeability": r"\mu_0"}
 
 
 _UNIT_TEX = {"second": r"\mathrm{s}", "farad/1000000": r"\mu\mathrm{F}", "farad": r"\mathrm{F}",
@@ -185,7 +191,8 @@ class Equation:
         if c.agrees:
             verdict = "printed form = derived form (symbolic difference simplifies to 0)"
         elif c.relation == "constant factor":
-            verdict = f"printed = derived x {float(c.factor):.6g} (ratio simplifies to {sp.nsimplify(c.factor)})"
+            exact = sp.nsimplify(c.factor, [sp.pi], tolerance=1e-12)  # shown only when it is short: 4/pi, not a float's digits
+            verdict = f"printed = derived x {float(c.factor):.6g}" + (f" (ratio {exact})" if len(str(exact)) <= 16 else "")
         else:
             verdict = f"printed - derived = {sp.N(c.difference, 4)}"
         note = verdict + (". " + self.note if self.note else "")
