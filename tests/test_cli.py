@@ -19,7 +19,7 @@ def test_examples_json():
         assert {"id", "source", "quantity", "unit", "printed", "computed", "status"} <= set(r)
         assert isinstance(r["printed"], float) and isinstance(r["computed"], float)
         assert r["unit"] in SI_UNITS
-        assert r["status"] in {"exact", "rounding", "misprint", "inconsistent"}
+        assert r["status"] in {"exact", "rounding", "bound met", "conservative", "misprint", "inconsistent", "wrong method"}
     by_id = {r["id"]: r for r in rows}
     assert by_id["an94002-capcd-bound"]["printed"] == 1.48e-8  # 0.0148 uF in farads
     assert by_id["an94002-offset-tol"]["printed"] == 0.12  # a percentage as a fraction

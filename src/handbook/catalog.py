@@ -42,7 +42,7 @@ def errata(note: str | None = None) -> list[dict]:
 def _errata_of(src) -> list[dict]:
     rows = []
     for r in src.evaluate():
-        if r["status"] in ("misprint", "inconsistent"):
+        if r["status"] in ("misprint", "inconsistent", "wrong method"):
             rows.append({"id": r["id"], "note": src.name, "source": r["source"], "kind": r["status"],
                          "what": r["quantity"], "printed": r["printed_text"], "recomputed": r["computed"],
                          "unit": r["unit"], "evidence": r["reason"], "consequence": r["consequence"]})

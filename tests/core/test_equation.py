@@ -51,9 +51,21 @@ def test_classify_accepts_a_value_that_follows_from_the_notes_rounded_intermedia
 
 
 def test_classify_bounds():
-    assert classify(10e-6, 0.5e-6, 39.8e-9, relation=">=") == "exact"
+    # C2: 10 uF chosen against a 39.8 nF minimum meets the bound; it is not "exact" beside two unequal numbers
+    assert classify(10e-6, 0.5e-6, 39.8e-9, relation=">=") == "bound met"
     assert classify(10e-9, 0.5e-9, 39.8e-9, relation=">=") == "misprint"
-    assert classify(1.0, 0.05, 2.0, relation="<=") == "exact"
+    assert classify(1.0, 0.05, 2.0, relation="<=") == "bound met"
+
+
+def test_rounded_to_the_safe_side_and_wrong_method_are_statuses_of_their_own():
+    from handbook import catalog
+
+    status = {r["id"]: r["status"] for r in catalog.claims()}
+    # theta_SA printed 2.5 and 3.5 K/W against 2.57 and 3.57: a heat sink rounded down to the better one
+    assert status["lm4651-theta-tf"] == status["lm4651-theta-t"] == "conservative"
+    # multiplying tolerance percentages (and carrying eq 14's matching into them) is a method, not a misprint
+    assert status["an94002-total-exact"] == status["an94002-resistor-tol"] == status["an93008-resistor-tol"] == "wrong method"
+    assert status["an94002-c2"] == "bound met"
 
 
 @pytest.mark.parametrize("bad", [math.nan, math.inf])

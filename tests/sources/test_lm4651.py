@@ -21,8 +21,8 @@ HAND = {
 }
 STATUS = {
     "inconsistent": {"lm4651-f-15k", "lm4651-f-0", "lm4651-dead-time", "lm4651-overmod", "lm4651-eps0"},
-    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-cstart", "lm4651-theta-tf", "lm4651-theta-t",
-                 "lm4651-gain-4k7"},
+    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-cstart", "lm4651-gain-4k7"},
+    "conservative": {"lm4651-theta-tf", "lm4651-theta-t"},  # 2.5 and 3.5 K/W: rounded down to the better heat sink
 }
 
 

@@ -67,7 +67,8 @@ def classify(printed: float, half_unit: float, computed: float, *, relation: str
              basis: str = "note", via_rounded: float | None = None) -> str:
     """Status of a printed number against its recomputation.
 
-    * ``exact``: equal to floating-point precision (for a bound: the printed value meets it);
+    * ``exact``: equal to floating-point precision;
+    * ``bound met``: for a bound (relation ">=" or "<="), the printed value meets it;
     * ``rounding``: within half a unit of the last printed digit, of the recomputed value or of the
       value the note's own rounded intermediate gives (``via_rounded``);
     * otherwise ``misprint`` when the recomputation uses the note's own inputs (``basis="note"``),
@@ -88,7 +89,7 @@ def classify(printed: float, half_unit: float, computed: float, *, relation: str
         if ok:
             return "rounding"
     if relation != "=" and ok:
-        return "exact"
+        return "bound met"
     return "misprint" if basis == "note" else "inconsistent"
 
 
@@ -129,10 +130,23 @@ class Claim:
     basis: str = "note"  # "note", or the other document the recomputation rests on
     via_rounded: Callable[[Mapping], float] | None = None
     consequence: str = ""  # for a misprint or an inconsistency: what it means for a designer
+    safe_side: str = ""  # "below" or "above": the side a designer may round to on purpose (a heat sink's K/W)
+    method_wrong: bool = False  # the number follows the note's arithmetic but the method itself is wrong
 
     @property
     def unit(self) -> str:
         return UNIT_SCALES[self.printed.unit][1]
+
+    def _status(self, computed: float, via: float | None) -> str:
+        """classify, then the two statuses a number's arithmetic alone cannot tell: a wrong method, and a
+        value rounded to the safe side on purpose ("conservative")."""
+        status = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation, basis=self.basis,
+                          via_rounded=via)
+        if self.method_wrong:
+            return "wrong method"
+        if status in ("misprint", "inconsistent") and self.safe_side and _safe_rounding(self, computed):
+            return "conservative"
+        return status
 
     def evaluate(self, params: Mapping, defaults: Mapping) -> dict:
         """Recompute with ``params``; compare with the print only where the inputs read are the note's."""
@@ -144,8 +158,7 @@ class Claim:
             status = "n/a"
             reason = "inputs differ from the note's (" + ", ".join(changed) + "): no printed value to compare"
         else:
-            status = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation,
-                              basis=self.basis, via_rounded=via)
+            status = self._status(computed, via)
             reason = self.reason
         return {
             "id": self.id, "source": self.where, "chapter": self.chapter, "quantity": self.quantity,
@@ -153,6 +166,12 @@ class Claim:
             "computed": computed, "relation": self.relation, "basis": self.basis, "status": status,
             "reason": reason, "consequence": self.consequence, "depends": sorted(seen.read),
         }
+
+
+def _safe_rounding(claim: Claim, computed: float) -> bool:
+    """The print is on the claim's safe side and within one unit of its last digit: rounded on purpose."""
+    gap = computed - claim.printed.si if claim.safe_side == "below" else claim.printed.si - computed
+    return 0 < gap <= 2 * claim.printed.half_unit * (1 + 1e-9)
 
 
 @dataclass(frozen=True)

@@ -10,8 +10,9 @@ from matplotlib.ticker import EngFormatter
 from ..core.claim import UNIT_SCALES
 
 #: status -> short badge used in tables
-BADGE = {"exact": "exact", "rounding": "rounding", "misprint": "**misprint**",
-         "inconsistent": "**inconsistent**", "n/a": "n/a"}
+BADGE = {"exact": "exact", "rounding": "rounding", "bound met": "bound met",
+         "conservative": "conservative (rounded to the safe side)", "misprint": "**misprint**",
+         "inconsistent": "**inconsistent**", "wrong method": "**wrong method**", "n/a": "n/a"}
 
 
 def eng(value: float, unit: str = "", digits: int = 4) -> str:
@@ -37,12 +38,15 @@ def _in_printed_unit(printed_text: str, value: float) -> tuple[str, str]:
     return number + suffix, f"{value / UNIT_SCALES[unit][0]:.4g}{suffix}"
 
 
-def examples_table(rows: list[dict]) -> Markdown:
-    """The status table of a chapter: printed, recomputed, status, why."""
-    lines = ["| quantity | printed | recomputed | status | why |", "|---|---|---|---|---|"]
+def examples_table(rows: list[dict], source: bool = False) -> Markdown:
+    """The status table of a chapter: printed, recomputed, status, why (and, for the registry's table of
+    every document, the source each number is printed in)."""
+    head = ["source"] * source + ["quantity", "printed", "recomputed", "status", "why"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in rows:
         printed, shown = _in_printed_unit(r["printed_text"], r["computed"])
-        lines.append(f"| {_cell(r['quantity'])} | {_cell(printed)} | {shown} | {BADGE[r['status']]} | {_cell(r['reason'])} |")
+        cells = [r["source"]] * source + [r["quantity"], printed, shown, BADGE[r["status"]], r["reason"]]
+        lines.append("| " + " | ".join(_cell(c) for c in cells) + " |")
     return Markdown("\n".join(lines))
 
 
@@ -55,7 +59,8 @@ def _printed_and_recomputed(r: dict) -> str:
 
 
 #: the kinds of erratum (catalog.errata()), as the book names them
-ERRATA_KINDS = {"misprint": "misprint", "inconsistent": "inconsistent", "equation": "equation differs",
+ERRATA_KINDS = {"misprint": "misprint", "inconsistent": "inconsistent", "wrong method": "wrong method",
+                "equation": "equation differs",
                 "reconstructed": "reconstructed equation", "text": "text erratum"}
 
 

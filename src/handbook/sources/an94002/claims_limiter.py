@@ -83,7 +83,7 @@ def build() -> list[Claim]:
                      "varying on its own V_cs = V_D1 (1 - B/A) moves -86 %/+85 % (a 100 mV difference of two 8 V "
                      "dividers)",
               consequence="the limiter can trip anywhere from almost no current to twice the design value on a real "
-                          "board; design it with the exact worst case (chapter 'Choosing R7 and R9')"),
+                          "board; design it with the exact worst case (chapter 'Choosing R7 and R9')", method_wrong=True),
         Claim(id="an94002-total-tol", where=WHERE, quantity="total initial tolerance, note's method 1.12 x 1.05 x 1.05",
               printed=Printed("23", "%"), chapter=ch, compute=lambda p: 1.12 * 1.05 * 1.05 - 1,
               reason="1.12 x 1.05 x 1.05 = 1.2348; the method's lower end is 0.88 x 0.95 x 0.95 = 0.794 (-20.6 %)"),
@@ -92,5 +92,5 @@ def build() -> list[Claim]:
               reason="every corner of 1 % R9..R13, 5 % zener and +-9 mV offset: the trip voltage spans 1.2 to 206 mV "
                      "(-99 %/+106 %), not +-23 %",
               consequence="a board built as the note says is not guaranteed to limit at all, or may limit far too "
-                          "early; see the design chapter for a limiter that is"),
+                          "early; see the design chapter for a limiter that is", method_wrong=True),
     ]

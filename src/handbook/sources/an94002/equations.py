@@ -29,7 +29,8 @@ V_be, R7, I_lim, T, TC = sp.symbols(r"V_{be} R_7 I_{lim} T TC_{V_{be}}", real=Tr
 Z, f, C2 = sp.symbols(r"|Z| f C_2", positive=True)
 V_os = sp.Symbol("V_{os}", real=True)
 # printed symbols: plain numbers in the note's units
-C_uF, RPM, RPM_min = sp.symbols(r"\mathrm{CAP}_{\mu{}F} \mathrm{RPM} \mathrm{RPM}_{min}", positive=True)  # upright: "RPM n", not "RPMn"
+# upright names: "RPM n" reads as two symbols, not "RPMn"
+C_uF, RPM, RPM_min = sp.symbols(r"\mathrm{CAP}_{\mu{}F} \mathrm{RPM} \mathrm{RPM}_{min}", positive=True)
 RPM_ratio = sp.Symbol(r"\frac{RPM_{max}}{RPM_{min}}", positive=True)
 
 #: the note's A and B (eq 13) in the resistors
