@@ -103,6 +103,9 @@ def cmd_design(args) -> int:
         try:
             for table, figures in spice.confirm(designed).items():
                 out[table]["spice"] = figures
+                if figures.get("ok") is False:
+                    print(f"warning: --spice: [{table}] the simulation does not confirm the design: {figures}",
+                          file=sys.stderr)
         except (spice.SpiceUnavailable, spice.SpiceError) as exc:
             return _design_error(args, 4, f"--spice: {exc}")
     if args.bom and not failed:

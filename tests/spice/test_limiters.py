@@ -60,11 +60,26 @@ def test_a_design_is_confirmed_at_its_two_worst_corners(ngspice):
     from handbook.design import current_limiter
 
     r = current_limiter.design({})
-    lo, hi = limiters.design_corners(r)
+    lo, hi, head = limiters.design_corners(r)
     assert lo["i_eq"] == pytest.approx(r.i_trip_min, rel=1e-9) and hi["i_eq"] == pytest.approx(r.i_trip_max, rel=1e-9)
+    assert head["head_eq"] == pytest.approx(r.headroom_min, rel=1e-9)
     out = limiters.design_check(r)
     assert out["i_trip_min"] == pytest.approx(r.i_trip_min, rel=0.01)
     assert out["i_trip_max"] == pytest.approx(r.i_trip_max, rel=0.01)
+    assert out["ok"] and out["headroom_min"] == pytest.approx(r.headroom_min, abs=5e-3)
+
+
+def test_a_network_that_leaves_the_op_amp_latched_is_not_confirmed(ngspice):
+    """R12 7 % low puts V+ within 2 V of the supply at the least-headroom corner: the trip currents still look
+    normal afterwards, but at no motor current the output is already low; design_check must say so."""
+    import dataclasses
+
+    from handbook.design import current_limiter
+
+    r = current_limiter.design({})
+    bad = dataclasses.replace(r, r12=r.r12 * 0.93)
+    out = limiters.design_check(bad)
+    assert not out["ok"] and out["headroom_min"] < 2.0
 
 
 def test_lcapy_derives_eq_13_from_the_netlist():

@@ -363,7 +363,7 @@ def design_corners(result) -> tuple[dict, dict]:
     ios = min(s["input_offset_current"], 2 * ib)
     biases = [(g * a, g * b) for g in (-1, 1) for a, b in ((ib, ib), (ib, ib - ios), (ib - ios, ib))]
     base = opamp_defaults()
-    lo = hi = None
+    lo = hi = head = None
     for signs in itertools.product((-1, 1), repeat=6):
         r = [x * (1 + tol * g) for x, g, tol in zip((result.r7, *result.network), signs, (s["r7_tolerance"],) + (t,) * 5)]
         for vz, vos, (ibp, ibn) in itertools.product(net.zener_range(s), (-off, off), biases):
@@ -372,17 +372,27 @@ def design_corners(result) -> tuple[dict, dict]:
             p["i_eq"] = trip_voltage(p) / p["r7"]
             lo = p if lo is None or p["i_eq"] < lo["i_eq"] else lo
             hi = p if hi is None or p["i_eq"] > hi["i_eq"] else hi
-    return lo, hi
+            s910, r11, r12, r13 = p["r9"] + p["r10"], p["r11"], p["r12"], p["r13"]
+            p["head_eq"] = min(vz * r12 / (r12 + r13) - ibp * r12 * r13 / (r12 + r13),
+                               vz * s910 / (s910 + r11) - ibn * s910 * r11 / (s910 + r11))
+            head = p if head is None or p["head_eq"] < head["head_eq"] else head
+    return lo, hi, head
 
 
 def design_check(result) -> dict:
-    """A current-limiter design (handbook.design.current_limiter) simulated at its two worst corners in one
-    run: {"i_trip_min", "i_trip_max"} from SPICE (A), beside the equations' values at the same corners."""
-    lo, hi = design_corners(result)
-    blocks = [{**c, "i_max": 1.5 * hi["i_eq"]} for c in (lo, hi)]
-    out = run(_opamp_deck("designed limiter at its two worst corners", blocks))
+    """A current-limiter design (handbook.design.current_limiter) simulated in one run at its two worst trip
+    corners and at its corner of least input headroom: {"i_trip_min", "i_trip_max"} from SPICE (A) beside the
+    equations' values, "headroom_min" (V, SPICE, that corner at no motor current) and "ok": the op-amp's
+    output is high at no motor current at all three corners. An input within the LM358's 2 V of the supply
+    makes the model's output stick low, so a limiter that would act on a motor drawing nothing shows up
+    here, however normal its trip current looks afterwards."""
+    lo, hi, head = design_corners(result)
+    blocks = [{**c, "i_max": 1.5 * hi["i_eq"]} for c in (lo, hi, head)]
+    out = run(_opamp_deck("designed limiter at its worst corners", blocks))
+    high = all(out[f"out0{sfx}"] > _mid(c) for sfx, c in zip(("", "_1", "_2"), blocks))
     return {"i_trip_min": out["i_trip"], "i_trip_max": out["i_trip_1"], "i_trip_min_equation": lo["i_eq"],
-            "i_trip_max_equation": hi["i_eq"]}
+            "i_trip_max_equation": hi["i_eq"], "headroom_min": min(out["head_p_2"], out["head_m_2"]),
+            "headroom_min_equation": head["head_eq"], "ok": bool(high)}
 
 
 def chapter_table(*circuits):
