@@ -150,7 +150,7 @@ def ripple(p: dict | None = None) -> Circuit:
     why = ("the model keeps only the square wave's fundamental (8 V_s / pi); SPICE has every harmonic (the third "
            "is a third as large and filtered 9 times more: +0.07 % rms) and the 25/26 ns edges")
     checks = (Check(f"{cid}-rms", f"switching residue at the load, rms, R_L = {p['r_load']:g} ohm", "V", eq,
-                    "ripple", 0.02, why),)
+                    "ripple", 0.005, why),)
     netlist = "\n".join([f"* {title}", *element_lines(p, ps), *tran_lines(p), ".end"]) + "\n"
     return Circuit(id=cid, title=title, source=f"{DATASHEET}, Output Stage Filtering; LM4652 t_r, t_f", parts=ps,
                    netlist=netlist, checks=checks, draw=partial(draw, ps))

@@ -128,10 +128,12 @@ def circuit(p: dict | None = None) -> Circuit:
     checks = (
         Check("tca5600-peak", "peak coil current", "A", e["i_peak"], "i_peak", 5e-3,
               "eq 6a: S1 opens at V12(H) / R1 exactly; SPICE's step (0.05 % of the peak) and RON are all"),
-        Check("tca5600-t1", "charging time t1", "s", e["t1"], "t1", 0.05, f"{ramp}: t1 some 3 % shorter"),
+        Check("tca5600-t1", "charging time t1", "s", e["t1"], "t1", 0.035,
+              f"{ramp}: the exact L/R1 ln(V_L / (V_L - V12(H))) is 2.8 % shorter; ±3.5 % leaves 0.7 % for the step"),
         Check("tca5600-t2", "dumping time t2", "s", e["t2"], "t2", 0.02, f"eq 1 and 3; {diode}"),
-        Check("tca5600-f", "free-running frequency", "Hz", e["f"], "f", 0.05, f"eq 4 from t1 and t2; {ramp}"),
-        Check("tca5600-iout", "current into C2", "A", e["i_out_max"], "i_out", 0.05,
+        Check("tca5600-f", "free-running frequency", "Hz", e["f"], "f", 0.025,
+              f"eq 4 from t1 and t2; {ramp}: about 1.4 % higher"),
+        Check("tca5600-iout", "current into C2", "A", e["i_out_max"], "i_out", 0.025,
               "eq 5: the triangle's dump half over the period; follows the shorter t1 (a higher f)"))
     title = f"TCA5600 converter power stage, L1 = {eng(p['l1'], 'H')}, R1 = {p['r1']:g} ohm"
     netlist = "\n".join([f"* {title}", *element_lines(ps), *_tran(p, _meas(p)), ".end"]) + "\n"
