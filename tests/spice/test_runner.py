@@ -74,3 +74,17 @@ def test_design_spice_adds_the_simulated_corners(tmp_path):
     assert {"swing_rpm_min", "swing_rpm_max"} <= set(com["spice"]) and {"f_corner", "ripple_at_load"} <= set(cd["spice"])
     # the corner of the filter by hand: 1 / (2 pi sqrt(2 L C)) with the chosen L and C
     assert cd["spice"]["f_corner"] == pytest.approx(1 / (2 * math.pi * math.sqrt(2 * cd["l_out"] * cd["c_out"])), rel=0.01)
+
+
+@needs_ngspice
+def test_a_failing_circuit_is_reported_and_the_others_still_are(monkeypatch):
+    from handbook.spice import checks
+    from handbook.spice.circuit import Check, Circuit
+
+    broken = Circuit("broken", "a broken deck", "test", (), "* a broken deck\nR1 a\n.tran 1u 1m\n.end\n",
+                     (Check("broken-x", "x", "V", 1.0, "x", 0.01, "none"),))
+    monkeypatch.setattr(checks, "circuits", lambda: [broken, checks._load("decoupling:circuit")()])
+    rows = checks.rows()
+    bad = [r for r in rows if r["circuit"] == "broken"]
+    assert len(bad) == 1 and not bad[0]["agrees"] and "ngspice refused the netlist" in bad[0]["error"]
+    assert any(r["circuit"] == "decoupling" and r["agrees"] for r in rows)

@@ -1,7 +1,7 @@
 """The speed-control loop and the decoupling capacitor C2 against the book's equations; drawings against
 netlists."""
 import pytest
-from test_timers import assert_drawn_as_netlisted
+from drawn_parts import assert_drawn_as_netlisted
 
 from handbook.spice import decoupling, runner, speed
 from handbook.spice.circuit import evaluate

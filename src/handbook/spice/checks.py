@@ -29,8 +29,18 @@ def circuits() -> list:
 
 
 def rows() -> list[dict]:
-    """One row per check of every circuit: id, circuit, quantity, unit, equation, spice, rel_diff, agrees."""
-    return [row for c in circuits() for row in evaluate(c)]
+    """One row per check of every circuit: id, circuit, quantity, unit, equation, spice, rel_diff, agrees.
+    A circuit whose run fails gives one row saying so (agrees False, its message in "error"); the others
+    are still reported. A missing ngspice raises SpiceUnavailable (nothing can be reported)."""
+    out = []
+    for c in circuits():
+        try:
+            out += evaluate(c)
+        except SpiceError as exc:
+            out.append({"id": f"{c.id}-run", "circuit": c.id, "quantity": "the simulation itself", "unit": "",
+                        "equation": float("nan"), "spice": float("nan"), "rel_diff": float("nan"), "agrees": False,
+                        "rtol": 0.0, "why": "", "error": str(exc)})
+    return out
 
 
 def confirm(results: dict) -> dict:

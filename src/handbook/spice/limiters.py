@@ -404,12 +404,14 @@ def chapter_table(*circuits):
 
     from ..report.tables import eng, table
     from .circuit import evaluate
-    from .runner import SpiceUnavailable
+    from .runner import SpiceError, SpiceUnavailable
 
     try:
         rows = [r for c in circuits for r in evaluate(c)]
     except SpiceUnavailable as exc:
         return Markdown(f"**SPICE check skipped:** {exc}.")
+    except SpiceError as exc:  # a netlist ngspice refused: said on the page, not a traceback
+        return Markdown(f"**SPICE run failed:** {exc}.")
     body = table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
                  [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
                    f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"±{r['rtol']:.1%}",

@@ -328,12 +328,14 @@ def chapter_table(circuit):
 
     from ..report.tables import table
     from .circuit import evaluate
-    from .runner import SpiceUnavailable
+    from .runner import SpiceError, SpiceUnavailable
 
     try:
         rows = evaluate(circuit)
     except SpiceUnavailable as exc:
         return Markdown(f"**SPICE check skipped:** {exc}.")
+    except SpiceError as exc:  # a netlist ngspice refused: said on the page, not a traceback
+        return Markdown(f"**SPICE run failed:** {exc}.")
     return table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
                  [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
                    f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"{r['rtol']:.1%}",
