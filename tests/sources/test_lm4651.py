@@ -18,10 +18,11 @@ HAND = {
     "lm4651-efficiency": 125 / 147, "lm4651-system-pd": P_4652 + 1.0,
     "lm4651-eps0": 8.8541878128e-12 * 0.0254 * 1e12, "lm4651-rf-ratio": 10.0,
     "lm4651-gain-4k7": 3.5 / 4.7 * 11 - 3.5 / 4.7 + 0.5,
+    "lm4651-hp-corner": 1 / (2 * math.pi * 25e3 * 1e-6),  # 6.366 Hz, printed 6.35
 }
 STATUS = {
     "inconsistent": {"lm4651-f-15k", "lm4651-f-0", "lm4651-dead-time", "lm4651-overmod", "lm4651-eps0"},
-    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-cstart", "lm4651-gain-4k7"},
+    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-cstart", "lm4651-gain-4k7", "lm4651-hp-corner"},
     "conservative": {"lm4651-theta-tf", "lm4651-theta-t"},  # 2.5 and 3.5 K/W: rounded down to the better heat sink
 }
 
@@ -68,3 +69,11 @@ def test_parameters_are_checked_and_defaults_come_from_the_facts():
         lm4651.params(t_overmod_tabel=300e-9)
     with pytest.raises(InputError, match="out of range"):
         lm4651.params(r_load=-4.0)
+
+
+def test_the_three_r1_values_are_an_erratum_with_their_corners():
+    text = {e.id: e for e in lm4651.SOURCE.errata}["lm4651-t-r1"]
+    for r1, corner in ((25e3, 6.4), (20e3, 8.0), (4.7e3, 33.9)):
+        assert 1 / (2 * math.pi * r1 * 1e-6) == pytest.approx(corner, abs=0.05)
+        assert f"{corner:.1f} Hz" in text.evidence
+

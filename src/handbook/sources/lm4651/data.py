@@ -65,6 +65,12 @@ ERRATA = (
     TextErratum("lm4651-t-rds", f"{NAME}, Example Design", "R_DS(on) 'at 100 C' = 0.230 ohm is not in the table",
                 "the LM4652 table gives 200 mOhm typical and 300 mOhm maximum at 25 C only",
                 "0.230 ohm is optimistic against the 300 mOhm maximum: conduction loss may be 30 % higher"),
+    TextErratum("lm4651-t-r1", f"{NAME}, DC offset vs Example Design vs figure 1",
+                "R1 is 25 k in the DC-offset section, 20 k in the Example Design and 4.7 k in figure 1",
+                "with the 1 uF input capacitor the high-pass corner is 6.4 Hz, 8.0 Hz and 33.9 Hz: the three "
+                "values are three different amplifiers",
+                "figure 1's 4.7 k with 1 uF cuts at 34 Hz, into a subwoofer's band: with 4.7 k use at least "
+                "4.7 uF (6.8 Hz)"),
     TextErratum("lm4651-t-supply", f"{NAME}, Example Design",
                 "the supply (+-20 V) comes from a graph that did not survive",
                 "the electrical tables are specified at +-20 V, 4 ohm, 125 kHz, consistent with the choice",
