@@ -5,23 +5,15 @@ import math
 import re
 
 import pytest
+from drawn_parts import drawn_labels
 
 from handbook.sources.lm4651 import circuit as eqs
 from handbook.spice import class_d
 from handbook.spice.circuit import evaluate
-from handbook.spice.runner import available, why_unavailable
 
 BUILT = (class_d.circuit, class_d.circuit_8ohm, class_d.ripple, class_d.ripple_8ohm)
 
 
-@pytest.fixture(scope="module")
-def ngspice():
-    if available() is None:
-        pytest.skip(why_unavailable())
-
-
-def _labels(drawing) -> list[str]:
-    return [lab.label for element in drawing.elements for lab in element._userlabels]
 
 
 def _line(netlist: str, ref: str) -> list[str]:
@@ -33,7 +25,7 @@ def _line(netlist: str, ref: str) -> list[str]:
 @pytest.mark.parametrize("build", BUILT)
 def test_drawing_and_netlist_have_the_same_parts(build):
     c = build()
-    labels = _labels(c.draw())
+    labels = drawn_labels(c.draw())
     drawn = {lab.split()[0] for lab in labels if re.match(r"^[A-Z]+[_0-9A-Z]* ", lab)}
     assert drawn == {p.ref for p in c.parts}
     for p in c.parts:

@@ -4,21 +4,11 @@ for figure 13's L1 and R1 and for the L1 and R1 that eq 3 to 6a design."""
 import re
 
 import pytest
+from drawn_parts import drawn_labels
 
 from handbook.sources import tca5600
 from handbook.spice import converter
 from handbook.spice.circuit import evaluate
-from handbook.spice.runner import available, why_unavailable
-
-
-@pytest.fixture(scope="module")
-def ngspice():
-    if available() is None:
-        pytest.skip(why_unavailable())
-
-
-def _labels(drawing) -> list[str]:
-    return [lab.label for element in drawing.elements for lab in element._userlabels]
 
 
 def _value(netlist: str, name: str, index: int = -1) -> float:
@@ -29,7 +19,7 @@ def _value(netlist: str, name: str, index: int = -1) -> float:
 
 def test_drawing_and_netlist_have_the_same_parts():
     c = converter.circuit()
-    labels = _labels(c.draw())
+    labels = drawn_labels(c.draw())
     assert {lab.split()[0] for lab in labels if re.match(r"^[A-Z]+[0-9]+ ", lab)} == {p.ref for p in c.parts}
     for p in c.parts:
         assert converter.label(p) in labels

@@ -13,11 +13,6 @@ from handbook.spice.limiter_drawings import label, labels
 BUILDERS = (limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limiters.supply_referenced)
 
 
-@pytest.fixture(scope="module")
-def ngspice():
-    if runner.available() is None:
-        pytest.skip(runner.why_unavailable())
-
 
 @functools.cache
 def simulated(builder):

@@ -9,11 +9,6 @@ from handbook.spice.circuit import evaluate
 BUILDERS = (speed.circuit, decoupling.circuit)
 
 
-@pytest.fixture(scope="module")
-def ngspice():
-    if runner.available() is None:
-        pytest.skip(runner.why_unavailable())
-
 
 @pytest.mark.parametrize("build", BUILDERS, ids=lambda b: b.__module__)
 def test_parts_drawn_are_the_parts_simulated(build):

@@ -5,16 +5,11 @@ from drawn_parts import assert_drawn_as_netlisted
 
 from handbook.design import commutation
 from handbook.sources import an94002 as note
-from handbook.spice import runner, timers
+from handbook.spice import timers
 from handbook.spice.circuit import evaluate
 
 BUILDERS = (timers.start_oscillator, timers.commutation_delay, timers.watchdog)
 
-
-@pytest.fixture(scope="module")
-def ngspice():
-    if runner.available() is None:
-        pytest.skip(runner.why_unavailable())
 
 
 @pytest.mark.parametrize("build", BUILDERS, ids=lambda b: b.__name__)

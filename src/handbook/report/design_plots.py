@@ -10,23 +10,6 @@ from ..sources.an94002 import circuit as an94002
 from .figures import axes
 
 
-def commutation_ranges(result):
-    """Every series capacitor's reliable speed range against the specified range."""
-    s = result.spec
-    caps = np.array(series.values(s["series"], result.cap_cd / 20, result.cap_cd * 6))
-    fig, ax = axes("capacitor", "reliable speed range (rpm)", "F", "", xlog=True, ylog=True)
-    for c in caps:
-        chk = commutation.verify(c, s)
-        ok = chk["rpm_min_reliable"] <= s["rpm_min"] and chk["rpm_max_reliable"] >= s["rpm_max"]
-        ax.plot([c, c], [chk["rpm_min_reliable"], chk["rpm_max_reliable"]], lw=5, color="C2" if ok else "0.7",
-                solid_capstyle="butt")
-    ax.axhspan(s["rpm_min"], s["rpm_max"], color="C0", alpha=0.12, label="specified range")
-    ax.plot([result.cap_cd], [s["rpm_min"]], "kv", label="chosen")
-    ax.legend(fontsize=8)
-    ax.set_title("green: covers the whole specified range")
-    return fig
-
-
 def limiter_histogram(result, others: dict | None = None, n: int = 100_000):
     """Monte Carlo trip currents of the design (and of other limiters given as (R7, (R9, .., R13))), with
     the two limits."""

@@ -45,6 +45,14 @@ class Circuit:
         return next(p for p in self.parts if p.ref == ref)
 
 
+def with_defaults(defaults: dict, p: dict | None) -> dict:
+    """A circuit's parameters: its defaults with ``p`` applied; an unknown key is refused, naming the known."""
+    unknown = set(p or {}) - set(defaults)
+    if unknown:
+        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}; known: {', '.join(sorted(defaults))}")
+    return {**defaults, **(p or {})}
+
+
 def evaluate(circuit: Circuit, run=None) -> list[dict]:
     """Run the netlist once and compare every check: rows (id, circuit, quantity, unit, equation, spice,
     rel_diff, agrees, rtol, why)."""

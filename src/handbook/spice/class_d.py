@@ -27,7 +27,7 @@ from ..design import class_d_model as model
 from ..report.tables import eng
 from ..sources import lm4651
 from ..sources.lm4651 import circuit as eqs
-from .circuit import Check, Circuit, Part
+from .circuit import Check, Circuit, Part, with_defaults
 from .runner import run
 
 DATASHEET = "LM4651/LM4652 datasheet"
@@ -45,14 +45,6 @@ def defaults() -> dict:
     note = lm4651.params()
     return {"l_out": eqs.L_REF, "c_out": eqs.C_REF, "r_load": note["r_load"], "f_sw": note["f_sw"],
             "supply": eqs.SUPPLY_REF, "t_rise": note["t_rise"], "t_fall": note["t_fall"], "f_audio": F_AUDIO}
-
-
-def _with(p: dict | None) -> dict:
-    d = defaults()
-    unknown = set(p or {}) - set(d)
-    if unknown:
-        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}; known: {', '.join(sorted(d))}")
-    return {**d, **(p or {})}
 
 
 def parts(p: dict) -> tuple[Part, ...]:
@@ -99,7 +91,7 @@ def ac_deck(p: dict, ps: tuple[Part, ...], title: str, meas: list[str]) -> str:
 
 def circuit(p: dict | None = None) -> Circuit:
     """The filter and its load in AC: corner, Q, the gain at f_audio and the band's largest deviation."""
-    p = _with(p)
+    p = with_defaults(defaults(), p)
     ps, fa = parts(p), p["f_audio"]
     args = (p["l_out"], p["c_out"], p["r_load"])
     cid = f"lm4651-filter-{p['r_load']:g}ohm"
@@ -142,7 +134,7 @@ def tran_lines(p: dict, name: str = "ripple") -> list[str]:
 
 def ripple(p: dict | None = None) -> Circuit:
     """The idle bridge (50 % duty) through the filter: the switching residue at the load, rms."""
-    p = _with(p)
+    p = with_defaults(defaults(), p)
     ps = parts(p)
     cid = f"lm4651-ripple-{p['r_load']:g}ohm"
     title = f"LM4651/LM4652 bridge output filter, R_L = {p['r_load']:g} ohm, switching residue"
@@ -167,7 +159,7 @@ def ripple_8ohm() -> Circuit:
 def response(loads=(4.0, 8.0), p: dict | None = None, points: int = 61) -> dict:
     """|H| in dB from SPICE at ``points`` frequencies (log-spaced over f_audio / 1000 .. 10 f_audio) for
     each load: {"f": array, load: array of dB}. One AC run per load."""
-    p = _with(p)
+    p = with_defaults(defaults(), p)
     f = np.logspace(math.log10(p["f_audio"] / 1e3), math.log10(p["f_audio"] * 10), points)
     out = {"f": f}
     for r in loads:

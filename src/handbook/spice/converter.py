@@ -27,7 +27,7 @@ import numpy as np
 
 from ..report.tables import eng
 from ..sources import tca5600
-from .circuit import Check, Circuit, Part
+from .circuit import Check, Circuit, Part, with_defaults
 from .runner import run
 
 EXCERPT = "TCA5600/TCF5600 excerpt"
@@ -40,14 +40,6 @@ STEPS_PER_PERIOD = 2000  # transient step: a 2000th of the expected period (0.05
 def defaults() -> dict:
     """The chapter's operating point (tca5600.params()) with figure 13's L1 and R1."""
     return {**tca5600.params(), **tca5600.APPLICATION}
-
-
-def _with(p: dict | None) -> dict:
-    d = defaults()
-    unknown = set(p or {}) - set(d)
-    if unknown:
-        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}; known: {', '.join(sorted(d))}")
-    return {**d, **(p or {})}
 
 
 def parts(p: dict) -> tuple[Part, ...]:
@@ -121,7 +113,7 @@ def _meas(p: dict) -> list[str]:
 
 def circuit(p: dict | None = None) -> Circuit:
     """Figure 13's power stage at the chapter's operating point, run for seven cycles: figure 14 in SPICE."""
-    p = _with(p)
+    p = with_defaults(defaults(), p)
     ps, e = parts(p), expected(p)
     ramp = "eq 2 holds R1's drop at V12(H) all through t1; it ramps from 0, so the coil sees about V12(H)/2 more"
     diode = "D1's drop falls with the current (about V_T below V_F on average: 0.4 % of V_L+)"
@@ -144,7 +136,7 @@ def circuit(p: dict | None = None) -> Circuit:
 def waveform(p: dict | None = None, points: int = 241) -> dict:
     """The coil's current and voltage over two cycles from the third switch-on (figure 14), from SPICE:
     {"t": s from that switch-on, "i": A, "v": V (vcc - sw: V_L- while charging, -V_L+ while dumping)}."""
-    p = _with(p)
+    p = with_defaults(defaults(), p)
     period = 1 / expected(p)["f"]
     t0 = 2.9 * period  # just before the third switch-on; measured exactly below
     t = t0 + np.linspace(0.0, 2.4 * period, points)

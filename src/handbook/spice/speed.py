@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from ..sources import an94002 as note
 from . import models
-from .circuit import Check, Circuit, Part
+from .circuit import Check, Circuit, Part, with_defaults
 from .runner import run
 from .timers import BOARD, element_lines, label
 
@@ -32,14 +32,6 @@ def defaults() -> dict:
     return {**{k: p[k] for k in ("v_supply", "supply_tolerance", "v_drop_min", "r3", "r4", "v_mot_min")},
             "r1": BOARD["R1"], "r2": BOARD["R2"], "c8": BOARD["C8"], "r_motor": R_MOTOR, "gm": OTA_GM,
             "i_sink": OTA_SINK, "v_sat": OTA_SAT[0]}
-
-
-def _q(p: dict | None) -> dict:
-    base = defaults()
-    unknown = set(p or {}) - set(base)
-    if unknown:
-        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}")
-    return {**base, **(p or {})}
 
 
 def _parts(q: dict) -> tuple[Part, ...]:
@@ -65,7 +57,7 @@ def netlist(q: dict, parts, extra: tuple = ()) -> str:
 
 def circuit(p: dict | None = None) -> Circuit:
     """The loop at the lowest supply, V_in swept 0 to 3 V: V_mot at the two ends of the control range."""
-    q = _q(p)
+    q = with_defaults(defaults(), p)
     parts = _parts(q)
     lo_in, hi_in = note.v_in_range({**note.params(), **q})
     v_top = note.v_mot_max(q["v_supply"], q["supply_tolerance"], q["v_drop_min"])
@@ -86,7 +78,7 @@ def circuit(p: dict | None = None) -> Circuit:
 
 def sweep(p: dict | None = None, points: int = 31) -> dict:
     """V_mot and the OTA's input difference against V_in from the simulation, for the chapter's plot."""
-    q = _q(p)
+    q = with_defaults(defaults(), p)
     parts = _parts(q)
     v_in = [2.99 * k / (points - 1) for k in range(points)]
     meas = [f".meas dc m{k} FIND v(vmot) AT={v:.6g}" for k, v in enumerate(v_in)]

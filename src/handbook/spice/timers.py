@@ -19,7 +19,7 @@ from __future__ import annotations
 from ..report.tables import eng
 from ..sources import an94002 as note
 from ..sources.an94002.parts import PARTS
-from .circuit import Check, Circuit, Part
+from .circuit import Check, Circuit, Part, with_defaults
 from .runner import run
 
 TDA5144 = "TDA5144 datasheet (June 1994), via datasheet_facts.md"
@@ -47,13 +47,6 @@ def label(part: Part) -> str:
     return f"{part.ref} {part.value if isinstance(part.value, str) else eng(part.value, part.unit)}"
 
 
-def _with(defaults: dict, p: dict | None) -> dict:
-    unknown = set(p or {}) - set(defaults)
-    if unknown:
-        raise KeyError(f"unknown parameter(s): {', '.join(sorted(unknown))}; known: {', '.join(sorted(defaults))}")
-    return {**defaults, **(p or {})}
-
-
 def _hysteresis(v_low: float, v_high: float) -> str:
     """ngspice's switch turns on above VT + VH and off below VT - VH: the comparator's two levels."""
     return f"SW(VT={(v_high + v_low) / 2:.6g} VH={(v_high - v_low) / 2:.6g} RON=1 ROFF=1e12)"
@@ -79,7 +72,7 @@ def start_defaults() -> dict:
 
 def start_oscillator(p: dict | None = None) -> Circuit:
     """CAP-ST (C5) charged and discharged at I_ST between the TDA5144's two levels (0.20 V, 2.20 V)."""
-    q = _with(start_defaults(), p)
+    q = with_defaults(start_defaults(), p)
     parts = (Part("C5", q["cap_st"], "F", "CAP-ST"),
              Part("I_ST", q["i_st"], "A", "CAP-ST charge = discharge current, typ (TDA5144)"),
              Part("V_LOW", q["v_low"], "V", "CAP-ST lower level (TDA5144)"),
@@ -168,7 +161,7 @@ def _cd_netlist(q: dict, parts, extra: tuple = ()) -> tuple[str, dict]:
 def commutation_delay(p: dict | None = None) -> Circuit:
     """C3 (CAP-CD) and C4 (CAP-DC) driven by the TDA5144's typical currents, ``cycles`` electrical cycles at
     rpm_min and then at rpm_max."""
-    q = _with(commutation_defaults(), p)
+    q = with_defaults(commutation_defaults(), p)
     parts = (Part("C3", q["cap_cd"], "F", "CAP-CD"), Part("C4", q["cap_dc"], "F", "CAP-DC"),
              Part("I_CH", q["i_ch"], "A", "charge (source) current, typ (TDA5144)"),
              Part("I_DIS", q["i_dis"], "A", "discharge (sink) current, typ (TDA5144)"),
@@ -198,7 +191,7 @@ def commutation_delay(p: dict | None = None) -> Circuit:
 def commutation_waveforms(p: dict | None = None, points: int = 400) -> dict:
     """Figure 4 from the simulation: CAP-CD and CAP-DC sampled at ``points`` times (.meas FIND AT), with the
     zero crossings. {"t": [...], "cd": [...], "dc": [...], "zc": [...], "tc": {...}}."""
-    q = _with(commutation_defaults(), p)
+    q = with_defaults(commutation_defaults(), p)
     c = commutation_delay(q)
     _, info = _cd_netlist(q, c.parts)
     end = info["zc"][-1]
@@ -243,7 +236,7 @@ def watchdog_defaults() -> dict:
 def watchdog(p: dict | None = None) -> Circuit:
     """C6 (CAP-TI): one stalled cycle (the ramp reaches 2.2 V, the watchdog fires, 28 uA back to 0.2 V), then
     one in which the EMF recovers half-way up the ramp (the discharge starts there)."""
-    q = _with(watchdog_defaults(), p)
+    q = with_defaults(watchdog_defaults(), p)
     parts = (Part("C6", q["cap_ti"], "F", "CAP-TI"),
              Part("I_FAST", q["i_ti_fast"], "A", "internal timing charge, 0.2 to 0.3 V (TDA5144)"),
              Part("I_WD", q["i_wd"], "A", "watchdog charge, 0.3 to 2.2 V (TDA5144)"),
