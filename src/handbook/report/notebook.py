@@ -40,3 +40,32 @@ def glue_all(**values) -> None:
 
     for name, v in values.items():
         glue(name, float(v) if isinstance(v, (int, float, np.floating, np.integer)) else v, display=False)
+
+
+def is_note(chosen: dict, defaults: dict, rel: float = 1e-9) -> bool:
+    """True when every parameter in ``chosen`` equals the chapter's default (the note's value).
+
+    A chapter's prose that is true only for the note's board (``the note's choice``, ``the board's 18 nF``)
+    is glued through :func:`note_only`, which shows it only when this is true.
+    """
+    for key, value in chosen.items():
+        if key not in defaults:  # a derived entry, not an input
+            continue
+        ref = defaults[key]
+        if isinstance(value, (int, float)) and isinstance(ref, (int, float)) and not isinstance(value, bool):
+            if abs(float(value) - float(ref)) > rel * max(abs(float(ref)), 1e-300):
+                return False
+        elif value != ref:
+            return False
+    return True
+
+
+def note_only(name: str, text: str, note: bool, otherwise: str = "") -> None:
+    """Glue a Markdown sentence that holds only for the note's inputs, under ``name`` (``{glue:md}`name```).
+
+    With the note's inputs the sentence is shown as written; with a reader's inputs ``otherwise`` is shown
+    instead (by default nothing), so a re-run never states the note's result as the reader's.
+    """
+    from myst_nb import glue
+
+    glue(name, Markdown(text if note else otherwise), display=False)
