@@ -131,9 +131,23 @@ def _print_designs(out: dict, failed: dict) -> None:
             print(f"  cannot be met: {failed[table]}")
             continue
         for o in OUTPUTS[table]:
-            print(f"  {o.label.ljust(lw)}  {shown_value(out[table][o.key], o.unit)}")
+            print(f"  {o.label.ljust(lw)}  {_shown(out[table][o.key], o.unit, shown_value)}")
         for key, value in out[table].get("spice", {}).items():
             print(f"  SPICE: {key:38s} {value:.4g}")
+
+
+def _shown(v, unit: str, shown_value) -> str:
+    """shown_value, and the converter's units it leaves plain: times, lengths and flux densities with SI
+    prefixes (25.35 us, 63.3 um, 235 mT), kelvin and pure numbers without a unit symbol."""
+    from .report.tables import eng
+
+    if isinstance(v, float) and unit in ("s", "m", "T"):
+        return eng(v, unit)
+    if isinstance(v, float) and unit == "K":
+        return f"{v:.3g} K"
+    if isinstance(v, float) and unit == "1":
+        return f"{v:.4g}"
+    return shown_value(v, unit)
 
 
 def cmd_spice(args) -> int:
@@ -163,6 +177,25 @@ def cmd_spice(args) -> int:
     return 0 if all(r["agrees"] for r in rows) else 1
 
 
+def cmd_render(args) -> int:
+    from . import render
+    from .core import InputError
+
+    if bool(args.notebook) == bool(args.spec):
+        print("render: give either a notebook or --spec SPEC.toml (one of them)", file=sys.stderr)
+        return 2
+    warned: list[str] = []
+    try:
+        page = render.render(args.notebook, args.out, warned) if args.notebook else render.render_spec(args.spec, args.out)
+    except InputError as exc:
+        print(exc, file=sys.stderr)
+        return 2
+    for line in warned:
+        print("warning:", line, file=sys.stderr)
+    print(page)
+    return 0
+
+
 def _filters(p) -> None:
     p.add_argument("--json", action="store_true", help="a JSON list; values in SI base units")
     p.add_argument("--source", metavar="TEXT", help="only entries whose source or id contains TEXT (e.g. AN94002)")
@@ -181,9 +214,11 @@ def main(argv=None) -> int:
     p = sub.add_parser("errata", help="every erratum: what the source says, what holds, the evidence")
     _filters(p)
     p.set_defaults(func=cmd_errata)
-    p = sub.add_parser("design", help="choose the timing capacitors, the limiter network and the class-D parts",
+    p = sub.add_parser("design", help="choose the timing capacitors, the limiter network, the class-D parts and "
+                       "the TCA5600 converter's coil",
                        epilog=spec_help(), formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("spec", nargs="?", help="TOML file with optional [commutation], [current_limiter], [class_d] tables")
+    p.add_argument("spec", nargs="?", help="TOML file with optional [commutation], [current_limiter], [class_d], "
+                   "[converter] tables")
     p.add_argument("--json", action="store_true", help="one JSON object, SI units")
     p.add_argument("--bom", metavar="FILE.csv", help="also write a bill of materials (written only when every table designs)")
     p.add_argument("--spice", action="store_true",
@@ -193,6 +228,12 @@ def main(argv=None) -> int:
     p = sub.add_parser("spice", help="every circuit's SPICE checks: equation against ngspice")
     p.add_argument("--json", action="store_true", help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, agrees")
     p.set_defaults(func=cmd_spice)
+    p = sub.add_parser("render", help="render a re-run chapter (or 'Design your own' on a spec) to a web page with "
+                       "the book's look, offline")
+    p.add_argument("notebook", nargs="?", help="an executed notebook, e.g. what papermill wrote")
+    p.add_argument("--spec", metavar="SPEC.toml", help="run 'Design your own' on this spec, then render it")
+    p.add_argument("-o", "--out", metavar="DIR", help="where the page goes (default: beside the input, NAME_html)")
+    p.set_defaults(func=cmd_render)
     args = parser.parse_args(argv)
     return args.func(args)
 

@@ -10,7 +10,8 @@ from handbook.design import schema
 ROOT = Path(__file__).resolve().parents[2]
 
 #: design chapter -> the table its parameters cell sets
-CHAPTERS = {"cap_cd": "commutation", "current_limiter": "current_limiter", "class_d": "class_d"}
+CHAPTERS = {"cap_cd": "commutation", "current_limiter": "current_limiter", "class_d": "class_d",
+            "converter": "converter"}
 
 
 def test_readme_key_table_is_the_schema():

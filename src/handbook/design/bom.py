@@ -10,7 +10,7 @@ from pathlib import Path
 def rows(result: dict) -> list[dict]:
     """Reference, value (SI, for programs), value_text (with its unit, for people), tolerance, series, and why
     each value was chosen."""
-    c, lim, cd = result["commutation"], result["current_limiter"], result["class_d"]
+    c, lim, cd, cv = result["commutation"], result["current_limiter"], result["class_d"], result["converter"]
     sc, sl, sd = c.spec, lim.spec, cd.spec
     table = [
         ("C3", c.cap_cd, sc["tolerance"], sc["series"],
@@ -45,9 +45,26 @@ def rows(result: dict) -> list[dict]:
         ("C_BYP", cd.c_out, sd["c_tolerance"], sd["c_series"], "bridge output filter across the load, film"),
         ("heat sink", cd.theta_sa_required, 0.0, "K/W",
          f"LM4652 heat sink of {cd.theta_sa_required:.2f} K/W or better: T_j {cd.t_junction:.0f} C at worst"),
+        *converter_rows(cv),
     ]
     return [{"reference": r, "value": v, "value_text": readable(r, v, ser), "tolerance": t, "series": ser, "reason": why}
             for r, v, t, ser, why in table]
+
+
+def converter_rows(cv) -> list[tuple]:
+    """The TCA5600 converter's coil and sense resistor (the class-D filter already uses L1, L2)."""
+    from ..report.tables import eng
+
+    return [
+        ("L1 (TCA5600)", cv.l1, 0.0, "",
+         f"eq 6: {cv.turns} turns of {cv.wire} on {cv.core_shape} in {cv.core_material}, A_L {eng(cv.a_l, 'H')} "
+         f"(centre gap about {eng(cv.gap, 'm')} without fringing), the smallest core of the candidate set with "
+         f"{cv.saturation_margin:.0%} of saturation left at {eng(cv.i_peak, 'A')} (eq 5); loss "
+         f"{eng(cv.core_loss + cv.winding_loss, 'W')}, rise {cv.temperature_rise:.2g} K"),
+        ("R1 (TCA5600)", cv.r1, 0.01, "",
+         f"eq 6a: V12(H) / I_peak = {cv.spec['v12h']:g} V / {eng(cv.i_peak, 'A')} sets the peak coil current; a "
+         f"lower series value raises it, which the coil's {cv.saturation_margin:.0%} saturation margin must cover"),
+    ]
 
 
 #: the unit of each reference's value, by its first letter (the heat sink's is in its series column)

@@ -89,6 +89,51 @@ def _limiter() -> tuple[Param, ...]:
     )
 
 
+def _converter() -> tuple[Param, ...]:
+    """The TCA5600/TCF5600 dc/dc converter (excerpt, figures 13 and 14, eq 1 to 6a) and its coil's limits.
+
+    No public copy of the TCA5600's electrical characteristics was found (datasheet_facts.md): V12(H),
+    V_CE(sat) and V_F are the converter chapter's assumed figures, the operating point its assumed board."""
+    return (
+        Param(name="v_supply_min", default=8.0, unit="V", low=0.5, high=60.0,
+              meaning="VCC2 at its lowest (the operating point that sizes the coil)",
+              cite="assumption: a 12 V battery at cranking (TCA5600 chapter)"),
+        Param(name="v_out", default=12.0, unit="V", low=0.5, high=60.0, meaning="Vout2, the programmable "
+              "regulator's output", cite="assumption (TCA5600 chapter)"),
+        Param(name="i_out", default=0.05, unit="A", high=10.0, **_POS, meaning="Iout2 at its largest",
+              cite="assumption (TCA5600 chapter)"),
+        Param(name="f_min", default=20e3, unit="Hz", low=1e3, high=1e6,
+              meaning="lowest oscillation frequency, above the audio band",
+              cite="TCA5600 excerpt, eq 4: 'chosen above the audio frequency band (e.g. 20 kHz)'"),
+        Param(name="v_regulator_drop", default=2.5, unit="V", low=0.0, high=20.0,
+              meaning="input-output drop V(pin 9 - pin 8) of the programmable regulator",
+              cite="TCA5600 excerpt, eq 1: 2.5 V typical"),
+        Param(name="v_f", default=0.8, unit="V", low=0.0, high=5.0, meaning="forward drop V_F of the rectifier",
+              cite="assumption: a silicon rectifier at a few hundred mA (no public characteristics)"),
+        Param(name="v_ce_sat", default=0.5, unit="V", low=0.0, high=5.0,
+              meaning="saturation voltage V_CE(sat) of the internal switch",
+              cite="assumption: a bipolar switch at a few hundred mA (no public characteristics)"),
+        Param(name="v12h", default=0.4, unit="V", low=0.01, high=5.0,
+              meaning="current-sense threshold V12(H) across R1",
+              cite="assumption: comparator thresholds of this kind are a few hundred mV (no public "
+                   "characteristics)"),
+        Param(name="saturation_margin_min", default=0.2, unit="1", low=0.0, high=0.9,
+              meaning="least fraction of the core's saturation flux density (at 100 C, at its narrowest section) "
+                      "left at the peak current",
+              cite="assumption: covers R1's tolerance, V12(H)'s spread and the comparator's delay"),
+        Param(name="temperature_rise_max", default=40.0, unit="K", high=200.0, **_POS,
+              meaning="largest temperature rise of the coil (core and winding losses through the core's thermal "
+                      "resistance)", cite="assumption: 85 C ambient keeps the ferrite below its 125 C-class "
+                                          "bobbin rating"),
+        Param(name="fill_factor", default=0.5, unit="1", high=1.0, **_POS,
+              meaning="fraction of the bobbin's winding window the turns may fill, counted as N x (outer "
+                      "diameter)^2", cite="assumption: hand or machine layer winding of enamelled round wire"),
+        Param(name="current_density_max", default=5e6, unit="A/m^2", high=1e8, **_POS,
+              meaning="largest rms current density in the copper (5 A/mm^2 = 5e6)",
+              cite="assumption: a common limit for small, naturally cooled coils"),
+    )
+
+
 def _tables() -> dict[str, tuple[Param, ...]]:
     """The literal table (data)."""
     return {
@@ -224,6 +269,7 @@ def _tables() -> dict[str, tuple[Param, ...]]:
                   choices=SERIES_NAMES[:4]),
             Param(name="c_series", default="E12", unit="", meaning="E-series for C_BYP", choices=SERIES_NAMES[:4]),
         ),
+        "converter": _converter(),
     }
 
 
@@ -275,6 +321,19 @@ OUTPUTS: dict[str, tuple[Output, ...]] = {
         Output("thd_n", "%", "THD+N at the test point (in the analyser's band)"),
         Output("p_clip", "W", "clipping power"),
         Output("binding", "", "binding"), Output("warnings", "", "warnings"),
+    ),
+    "converter": (
+        Output("alpha", "1", "time ratio alpha = t1/t2 (eq 3)"), Output("t1", "s", "charging time t1 (eq 4)"),
+        Output("t2", "s", "dumping time t2"), Output("i_peak", "A", "peak coil current (eq 5)"),
+        Output("l1", "H", "coil inductance L1 (eq 6)"), Output("r1", "ohm", "current-sense resistor R1 (eq 6a)"),
+        Output("core_shape", "", "core shape"), Output("core_material", "", "core material"),
+        Output("turns", "", "turns"), Output("gap", "m", "centre-leg gap (no fringing; grind to A_L)"),
+        Output("a_l", "H", "A_L (inductance per turn squared)"), Output("wire", "", "wire"),
+        Output("b_peak", "T", "peak flux density (effective area)"), Output("core_loss", "W", "core loss (iGSE)"),
+        Output("winding_loss", "W", "winding loss (I_rms^2 R_dc at 100 C)"),
+        Output("temperature_rise", "K", "temperature rise"),
+        Output("saturation_margin", "%", "saturation margin at the peak current"),
+        Output("warnings", "", "warnings"),
     ),
 }
 

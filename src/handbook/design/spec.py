@@ -1,4 +1,5 @@
-"""Design specifications: a TOML file with optional tables [commutation], [current_limiter], [class_d].
+"""Design specifications: a TOML file with optional tables [commutation], [current_limiter], [class_d],
+[converter].
 
 Everything is checked before any computation, from the one schema (:mod:`handbook.design.schema`):
 unknown tables and keys (with the near match; a key written outside any table is told which table it
@@ -14,12 +15,13 @@ from pathlib import Path
 
 from ..core import InputError
 from ..core.source import unknown_key_message
-from . import class_d, commutation, current_limiter
+from . import class_d, commutation, converter, current_limiter
 from .schema import TABLES
 from .solvers import Infeasible
 
 #: table -> the design module that checks and solves it
-DESIGNS = {"commutation": commutation, "current_limiter": current_limiter, "class_d": class_d}
+DESIGNS = {"commutation": commutation, "current_limiter": current_limiter, "class_d": class_d,
+           "converter": converter}
 
 
 def _table_of(key: str) -> str | None:
@@ -81,7 +83,7 @@ def run_each(spec: dict) -> dict:
 
 
 def run(spec: dict) -> dict:
-    """All three designs. Raises InputError for bad input, Infeasible for the first unmeetable table."""
+    """All four designs. Raises InputError for bad input, Infeasible for the first unmeetable table."""
     out = run_each(spec)
     for result in out.values():
         if isinstance(result, Infeasible):
