@@ -34,6 +34,7 @@ RERUNS = {
     "an94002/watchdog": {"t_wd_target": 6e-3, "cap_ti": 22e-9},
     "design/cap_cd": {"pole_pairs": 4, "rpm_min": 1000.0, "rpm_max": 4000.0},
     "design/class_d": {"p_out": 60.0, "r_load": 8.0},
+    "design/converter": {"v_supply_min": 10.0, "i_out": 0.08, "f_min": 25e3},
     "design/current_limiter": {"i_no_trip": 0.5, "i_must_trip": 1.2},
     "design/your_own": {"spec_file": "fan.toml"},
     "lm4651/equations": {"p_out": 60.0, "r_load": 8.0, "f_sw": 150e3},
@@ -150,7 +151,8 @@ def param_units(chapter: str) -> dict:
     doc = chapter.split("/")[0]
     if doc == "design":
         from handbook.design import schema
-        table = {"cap_cd": "commutation", "class_d": "class_d", "current_limiter": "current_limiter"}.get(
+        table = {"cap_cd": "commutation", "class_d": "class_d", "current_limiter": "current_limiter",
+                 "converter": "converter"}.get(
             chapter.split("/")[1])
         return {prm.name: prm.unit for prm in schema.TABLES.get(table, ())} if table else {}
     return {prm.name: prm.unit for prm in import_module(f"handbook.sources.{doc}").SOURCE.parameters}

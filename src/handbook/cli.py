@@ -39,7 +39,8 @@ def cmd_examples(args) -> int:
 def cmd_equations(args) -> int:
     rows = _filtered(catalog.equation_summaries(), args, lambda r: "agrees" if r["agrees"] else "differs")
     if args.json:
-        keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "dimensions_ok", "law", "note")
+        keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "dimensions_ok", "law", "note",
+                "empirical", "fitted_to")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
         return 0
     table = [[r["id"], r["source"], "agrees" if r["agrees"] else "DIFFERS", "ok" if r["dimensions_ok"] else "ERROR",

@@ -120,3 +120,30 @@ def test_an_equation_is_frozen_and_checks_once():
     with pytest.raises(dataclasses.FrozenInstanceError):
         eq.law = "other"
     assert eq.check() is eq.check()  # computed once, then remembered
+
+
+def test_an_empirical_equation_is_checked_against_figures_not_a_derivation():
+    import sympy as sp
+    from sympy.physics import units as u
+
+    from handbook.core import Printed
+    from handbook.core.equation import Equation, TablePoint
+
+    r, rn = sp.symbols("R R_n", positive=True)
+    pts = (TablePoint("table a", "R = 4", {r: 4e3}, Printed("125", "kHz")),
+           TablePoint("table b", "R = 0", {r: 0.0}, Printed("200", "kHz", sig=3)))
+    eq = Equation(id="x-eq", source="x", title="f", lhs=sp.Symbol("f"), lhs_unit=u.hertz, lhs_scale=u.hertz,
+                  printed=10 ** 9 / (4000 + rn), scales={rn: r / u.ohm}, units={r: u.ohm}, empirical=True,
+                  fitted_to="the 4 k row", table=pts)
+    c = eq.check()
+    assert c.relation == "empirical" and not c.agrees and c.dims_ok
+    assert [p[-1] for p in c.points] == [True, False]
+    assert c.points[1][3] == pytest.approx(250.0) and c.points[1][4] == pytest.approx(0.25)  # kHz, +25 %
+    s = eq.summary()
+    assert s["empirical"] and s["fitted_to"] == "the 4 k row" and "(+25.0 %)" in s["note"]
+    assert r"\checkmark" in s["derived_latex"] and r"+25.0\,\%" in s["derived_latex"]
+    with pytest.raises(ValueError, match="fitted to"):
+        Equation(id="y", source="y", title="y", lhs=sp.Symbol("f"), lhs_unit=u.hertz, printed=rn,
+                 units={}, empirical=True)
+    with pytest.raises(ValueError, match="derived form is required"):
+        Equation(id="z", source="z", title="z", lhs=sp.Symbol("f"), lhs_unit=u.hertz, printed=rn, units={})

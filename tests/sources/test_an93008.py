@@ -88,3 +88,11 @@ def test_errata_by_source_document_and_as_book_entries():
     assert text.count("\n- ") + 1 == len(by_note["AN94002"])
     assert "Evidence: " in text and "For a designer: " in text
     assert not re.search(r"\.\.(\\|$)", text, re.MULTILINE)  # one full stop at each sentence's end
+
+
+def test_the_7v7_zener_minimum_is_not_a_misprint_and_the_ground_erratum():
+    rows = {r["id"]: r for r in an93008.evaluate()}
+    assert rows["an93008-vz-min"]["status"] == "exact" and rows["an93008-vz-min"]["computed"] == 7.7
+    assert "an93008-vz-min" not in {r["id"] for r in catalog.errata("AN93008")}
+    text = {e.id: e for e in an93008.SOURCE.errata}["an93008-t-gnd"]
+    assert "GND3" in text.evidence and "AN94002" in text.source

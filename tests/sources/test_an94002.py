@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from handbook.core import UNIT_SCALES, InputError, Printed
+from handbook.core import UNIT_SCALES, InputError, Printed, series
 from handbook.sources import an94002 as note
 
 EQS = {e.id: e for e in note.SOURCE.equations()}
@@ -105,6 +105,8 @@ HAND = {
     "an94002-zener-drift": 0.155,
     "an94002-zener-drift-pct": 0.155 / 7.79,
     "an94002-zener-tc": 0.0008 * 8.2,
+    "an94002-zener-spread": 0.5 / 8.2,  # BZX79-C8V2: 7.7 to 8.7 V, both 0.5 V from 8.2 V
+    "an94002-shift-7v7": 7.7 * 5.6 / (5.6 + 16),  # V_s - V_+ at V_Z = 7.7 V, V_cs = 0
     "an94002-total-tol": 1.12 * 1.05 * 1.05 - 1,
     "an94002-c2": 1 / (2 * math.pi * 2e6 * 2.0),
     "an94002-r3": 39e3,
@@ -125,7 +127,8 @@ STATUS = {
                  "an94002-total-tol"},
     "misprint": {"an94002-window-high", "an94002-window-low"},
     "wrong method": {"an94002-resistor-tol", "an94002-total-exact"},  # percentages multiplied, matching assumed
-    "inconsistent": {"an94002-capst-datasheet", "an94002-ich-max", "an94002-vbe", "an94002-zener-tc"},
+    "inconsistent": {"an94002-capst-datasheet", "an94002-ich-max", "an94002-vbe", "an94002-zener-tc",
+                     "an94002-zener-spread", "an94002-shift-7v7"},
 }
 
 
@@ -294,3 +297,19 @@ def test_params_refuse_values_out_of_range_naming_the_key(key, value):
 def test_every_parameter_default_is_in_its_own_range():
     for par in note.SOURCE.parameters:
         assert par.check(par.default) == par.default, par.name
+
+
+def test_bzx79_spread_and_the_level_shift_at_its_minimum_by_hand():
+    """The datasheet's 7.7 to 8.7 V is -6.1 %/+6.1 % about 8.2 V (the note says +-5 %); at 7.7 V the 5.6 k / 16 k
+    divider shifts 1.996 V, under the 2 V the note requires, and the note's R13 rule picks 15 k, not 16 k."""
+    assert (8.2 - 7.7) / 8.2 == pytest.approx(0.0610, abs=5e-5) and (8.7 - 8.2) / 8.2 == pytest.approx(0.0610, abs=5e-5)
+    assert EXAMPLES["an94002-zener-spread"]["printed"] == 0.05
+    shift = 7.7 * 5.6e3 / 21.6e3
+    assert shift == pytest.approx(1.99630, abs=1e-5) and shift < 2.0
+    assert EXAMPLES["an94002-shift-7v7"]["relation"] == "<="  # 2 V required <= the shift: not met
+    assert 5.6e3 * (7.7 - 2) / 2 == pytest.approx(15.96e3) and series.at_most("E24", 15.96e3) == 15e3
+    assert 2 * 21.6 / 5.6 == pytest.approx(7.714, abs=5e-4)  # the V_Z 16 k needs
+    assert (7.7 - 0.0062 * 25) * 5.6 / 21.6 == pytest.approx(1.956, abs=5e-4)  # at 0 C, the note's 6.2 mV/K
+    consequence = EXAMPLES["an94002-shift-7v7"]["consequence"]
+    assert "15 k" in consequence and "7.71 V" in consequence and "1.96 V" in consequence and "2.07 V" in consequence
+    assert (7.7 - 16 / 21.6 * (7.7 - 0.1)) == pytest.approx(2.07, abs=5e-3)  # V_s - V_+ at V_cs = 100 mV

@@ -15,6 +15,12 @@ compares it with the derived form symbolically: the difference simplifies to zer
 simplifies to a pure number (a rounded constant), or the two differ structurally, and each case is
 recorded. The dimensions of both sides are checked with ``sympy.physics.units``.
 
+An *empirical* equation (``empirical=True``) is a number-only formula for a circuit the source does
+not show (an internal oscillator, a reference, a timer): no circuit law can be written for it, so it has
+no ``derived`` form. ``fitted_to`` says what its constants reproduce, and its check is the printed form
+evaluated at the figures the source prints elsewhere (``table``: its tables, typical values, worked
+text), each within half a unit of the figure's last digit.
+
 The check is computed once per record (the record is frozen) and, through
 :mod:`handbook.core.checks_cache`, stored on disk keyed on the code that defines it.
 """
@@ -27,6 +33,8 @@ from decimal import Decimal
 import sympy as sp
 from sympy.physics import units as u
 from sympy.physics.units.systems.si import SI, dimsys_SI
+
+from .claim import UNIT_SCALES, Printed
 
 # ----------------------------------------------------------------------------------------------
 # units
@@ -76,6 +84,9 @@ def latex(expr) -> str:
 _CONSTANT_TEX = {"vacuum_permittivity": r"\varepsilon_0", "vacuum_permeability": r"\mu_0"}
 
 
+_FIGURE_UNIT_TEX = {"kohm": r"\mathrm{k\Omega}", "ohm": r"\Omega", "uF": r"\mu\mathrm{F}", "us": r"\mu\mathrm{s}",
+                    "%": r"\%"}
+
 _UNIT_TEX = {"second": r"\mathrm{s}", "farad/1000000": r"\mu\mathrm{F}", "farad": r"\mathrm{F}",
              "volt": r"\mathrm{V}", "1/minute": r"\mathrm{rpm}"}
 
@@ -93,6 +104,18 @@ class Check:
     difference: sp.Expr | None  # printed - derived (physical), simplified
     dims_ok: bool  # printed and derived forms are dimensionally consistent with the left side
     dims_note: str
+    points: tuple = ()  # empirical equations: one (where, at, printed text, value in its unit, deviation, ok) each
+
+
+@dataclass(frozen=True)
+class TablePoint:
+    """A figure the source itself prints, which an empirical equation's printed form must reproduce."""
+
+    where: str  # where the source prints it ("LM4651 table, R_OSC = 15 k")
+    at: str  # the inputs as LaTeX ("R_{OSC} = 15\\,\\mathrm{k\\Omega}")
+    inputs: dict  # physical symbol -> SI value
+    figure: Printed  # the figure as printed (its unit and last digit give the comparison's tolerance)
+    through: object = None  # optional: maps the printed form's SI value to the figure's quantity (a chain)
 
 
 @dataclass(frozen=True, kw_only=True, eq=False)
@@ -103,9 +126,9 @@ class Equation:
     lhs: sp.Symbol  # physical quantity on the left
     lhs_unit: sp.Expr  # its SI unit (a sympy quantity expression)
     printed: sp.Expr  # right-hand side as printed, in the printed symbols
-    derived: sp.Expr  # right-hand side from circuit laws, physical symbols
+    derived: sp.Expr | None = None  # right-hand side from circuit laws, physical symbols (None: empirical)
     units: dict  # physical symbol -> sympy unit
-    law: str  # which circuit law the derivation uses
+    law: str = ""  # which circuit law the derivation uses
     scales: dict = field(default_factory=dict)  # printed symbol -> physical expression it stands for
     lhs_scale: sp.Expr | None = None  # the printed left side is lhs / lhs_scale (e.g. C / uF)
     values: dict = field(default_factory=dict)  # physical symbol -> value with units (note's numbers)
@@ -115,6 +138,15 @@ class Equation:
     ocr_form: sp.Expr | None = None  # the OCR text taken literally, where it differs
     printed_tex: str = ""  # the printed right side as LaTeX, where sympy would re-arrange it
     rounded_constants: bool = False  # printed with rounded numbers substituted: differs by rounding only
+    empirical: bool = False  # fitted to figures, not derivable: the source does not show the circuit
+    fitted_to: str = ""  # what the printed constants reproduce (empirical equations)
+    table: tuple = ()  # TablePoint: the source's own figures the printed form is checked against
+
+    def __post_init__(self):
+        if self.empirical and (self.derived is not None or not self.fitted_to):
+            raise ValueError(f"{self.id}: an empirical equation has no derived form and says what it is fitted to")
+        if not self.empirical and self.derived is None:
+            raise ValueError(f"{self.id}: a derived form is required (or empirical=True with fitted_to)")
 
     # -- forms -------------------------------------------------------------------------------
     def printed_physical(self) -> sp.Expr:
@@ -127,6 +159,11 @@ class Equation:
     def derived_at_values(self) -> sp.Expr:
         return self.derived.subs(self.values)
 
+    def value_at(self, inputs: dict) -> float:
+        """The printed form at ``inputs`` (physical symbol -> SI value), in SI units of the left side."""
+        expr = self._with_units(self.printed_physical()).subs(inputs, simultaneous=True) / self.lhs_unit
+        return float(to_si_number(expr))
+
     def _with_units(self, expr: sp.Expr) -> sp.Expr:
         # symbol -> symbol x unit (not the bare unit: V_s - V_D1 must not cancel to zero)
         return expr.subs({s: s * unit for s, unit in self.units.items()}, simultaneous=True)
@@ -138,12 +175,14 @@ class Equation:
     @functools.cached_property
     def _check(self) -> Check:
         printed = self.printed_physical()
-        derived = self.derived_at_values()
+        derived = None if self.empirical else self.derived_at_values()
         # Dimensions: both sides must carry the left side's dimension.
         lhs_dim = dimension_of(self.lhs_unit)
         notes = []
         dims_ok = True
         for name, form in (("printed", printed), ("derived", derived)):
+            if form is None:
+                continue
             try:
                 d = dimension_of(self._with_units(form))
             except ValueError as exc:  # a sum of unlike dimensions
@@ -153,6 +192,8 @@ class Equation:
             if not same_dimension(d, lhs_dim):
                 dims_ok = False
                 notes.append(f"{name} form has dimension {d}, left side {lhs_dim}")
+        if self.empirical:
+            return self._table_check(dims_ok, "; ".join(notes))
         # Agreement: difference zero, or a pure-number ratio, else structural.
         diff = to_si_number(self._with_units(printed - derived) / self.lhs_unit)
         if diff == 0:
@@ -163,6 +204,20 @@ class Equation:
             return Check(bool(same), "identical" if same else "constant factor", ratio,
                          None if same else diff, dims_ok, "; ".join(notes))
         return Check(False, "differs", None, diff, dims_ok, "; ".join(notes))
+
+    def _table_check(self, dims_ok: bool, dims_note: str) -> Check:
+        """An empirical equation: the printed form at each of the source's own figures, within half a unit of
+        the figure's last printed digit."""
+        points = []
+        for pt in self.table:
+            value = self.value_at(pt.inputs)
+            if pt.through is not None:
+                value = float(pt.through(value))
+            scale = UNIT_SCALES[pt.figure.unit][0]
+            ok = abs(value - pt.figure.si) <= pt.figure.half_unit * (1 + 1e-9)
+            dev = value / pt.figure.si - 1 if pt.figure.si else None  # None: a zero figure, no ratio
+            points.append((pt.where, pt.at, str(pt.figure), value / scale, dev, bool(ok)))
+        return Check(all(p[-1] for p in points), "empirical", None, None, dims_ok, dims_note, tuple(points))
 
     def ocr_dims_ok(self) -> bool | None:
         """Whether the OCR text taken literally is dimensionally consistent (None if no OCR form)."""
@@ -183,11 +238,27 @@ class Equation:
         return f"{lhs} {rel} {self.printed_tex or latex(self.printed)}"
 
     def latex_derived(self) -> str:
+        """The derived form, or for an empirical equation the printed form at the source's own figures."""
+        if self.empirical:
+            return self._latex_table()
         rel = r"\ge" if self.relation == ">=" else "="
         return f"{latex(self.lhs)} {rel} {latex(self.derived)}"
 
+    def _latex_table(self) -> str:
+        rows = []
+        for _where, at, figure, value, dev, ok in self.check().points:
+            number, unit = figure.split(" ", 1)
+            u_tex = "" if unit == "1" else r"\," + _FIGURE_UNIT_TEX.get(unit, r"\mathrm{" + unit + "}")
+            off = rf"{100 * dev:+.1f}\,\%" if dev is not None else rf"{value - float(number):+.4g}{u_tex}"
+            mark = r"\checkmark" if ok else off
+            rows.append(rf"{at} & \text{{printed form: }} {value:.4g}{u_tex} & \text{{datasheet: }} {number}{u_tex}"
+                        rf" & {mark}")
+        return r"\begin{array}{llll}" + r" \\ ".join(rows) + r"\end{array}" if rows else r"\text{(no figure to check)}"
+
     def summary(self) -> dict:
         c = self.check()
+        if self.empirical:
+            return self._summary_empirical(c)
         if c.agrees:
             verdict = "printed form = derived form (symbolic difference simplifies to 0)"
         elif c.relation == "constant factor":
@@ -214,4 +285,31 @@ class Equation:
             "note": note,
             "reconstructed": self.reconstructed,
             "rounded_constants": self.rounded_constants,
+            "empirical": False,
+            "fitted_to": "",
+        }
+
+    def _summary_empirical(self, c: Check) -> dict:
+        """An empirical equation's summary: what it is fitted to and how it fares against the source's figures."""
+        def off(figure, value, dev):
+            number, unit = figure.split(" ", 1)
+            return f"{100 * dev:+.1f} %" if dev is not None else f"{value - float(number):+.4g} {unit} off"
+
+        checks = [f"{where}: {value:.4g} {figure.split(' ', 1)[1]} against {figure}"
+                  + ("" if ok else f" ({off(figure, value, dev)})") for where, _, figure, value, dev, ok in c.points]
+        verdict = ("reproduces every figure the datasheet prints for it" if c.agrees else
+                   "does not reproduce every figure the datasheet prints for it")
+        note = (f"Empirical, not derived: fitted to {self.fitted_to}. "
+                f"Printed form against the datasheet's own figures: {verdict}: " + "; ".join(checks) + ".")
+        if self.note:
+            note += " " + self.note
+        if not c.dims_ok:
+            note += " Dimension problem: " + c.dims_note
+        return {
+            "id": self.id, "source": self.source, "title": self.title,
+            "printed_latex": self.latex_printed(), "derived_latex": self.latex_derived(),
+            "agrees": bool(c.agrees), "relation": c.relation, "factor": None, "dimensions_ok": bool(c.dims_ok),
+            "law": "empirical: " + self.law if self.law else "empirical (no circuit law: the circuit is not shown)",
+            "note": note, "reconstructed": self.reconstructed, "rounded_constants": self.rounded_constants,
+            "empirical": True, "fitted_to": self.fitted_to,
         }

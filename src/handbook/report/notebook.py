@@ -27,6 +27,15 @@ def show_equation(eq) -> None:
     s = eq.summary()
     display(Markdown(f"**{eq.title}** ({eq.source})  \nprinted:"))
     display(Math(s["printed_latex"]))
+    if s.get("empirical"):
+        # no circuit law: the datasheet does not show the circuit; the check is against its own figures
+        display(Markdown(f"**empirical**, not derived (fitted to {s['fitted_to']}); the printed form at the "
+                         "datasheet's own figures:"))
+        display(Math(s["derived_latex"]))
+        dims = "dimensions consistent" if s["dimensions_ok"] else "**dimension error**"
+        verdict = "reproduces every figure" if s["agrees"] else "**misses figures the datasheet prints**"
+        display(Markdown(f"*Check:* {verdict}; {dims}. {s['note']}"))
+        return
     display(Markdown(f"derived ({eq.law}):"))
     display(Math(s["derived_latex"]))
     dims = "dimensions consistent" if s["dimensions_ok"] else "**dimension error**"

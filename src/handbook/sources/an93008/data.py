@@ -37,6 +37,13 @@ ERRATA = (
     TextErratum("an93008-t-unit", f"{NAME} 2.1", "the one-transistor limit's drift is printed '-0.25 °C'",
                 "-2 mV/K over 800 mV is -0.25 %/K; AN94002 2.3 prints the same sentence with '%/°C'",
                 "none once read as %/K"),
+    TextErratum("an93008-t-gnd", f"{NAME} 2 vs AN94002 3",
+                "'all GND pins are internally interconnected', the reason given for keeping the sense resistor out "
+                "of the ground return",
+                "AN94002 section 3, on the same TDA5143/TDA5144: 'GND3 is on the chip not connected to the ground "
+                "line and has externally to be connected to GND2'",
+                "connect GND3 to GND2 on the board, as AN94002 says; whether GND1 and GND2 are joined on the chip "
+                "(AN93008's reason for a supply-side sense resistor) neither note shows"),
     TextErratum("an93008-t-fig4", f"{NAME} 2.2, figure 4", "figure 4's resistor values did not survive the OCR",
                 "the text gives A = 0.74 and a 2 V shift; AN94002 figure 3 is the same circuit with 5.6 k / 16 k",
                 "the book evaluates figure 4 with AN94002's values, which give the note's A"),

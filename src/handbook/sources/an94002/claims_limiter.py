@@ -33,6 +33,12 @@ def largest_excursion(p, include=("resistors", "zener", "offset")):
     return max(abs(wc.rel_low), abs(wc.rel_high))
 
 
+def zener_spread(p):
+    """The BZX79-C8V2's datasheet spread about the nominal V_Z: the larger of its two sides, as a fraction."""
+    low, high = FACTS["bzx79_vz"].value
+    return max(p["v_zener"] - low, high - p["v_zener"]) / p["v_zener"]
+
+
 def build() -> list[Claim]:
     ch = "opamp"
     return [
@@ -66,6 +72,24 @@ def build() -> list[Claim]:
         Claim(id="an94002-zener-tol", where=f"{NAME} 2.4, eq (13)", quantity="zener-related tolerance of the limit",
               printed=Printed("5", "%"), chapter=ch, compute=lambda p: p["zener_tolerance"],
               reason="V_cs is proportional to V_D1 (eq 13)"),
+        Claim(id="an94002-zener-spread", where=f"{NAME} 2.4 vs BZX79 datasheet",
+              quantity="zener tolerance of the BZX79-C8V2 ('a tolerance of +-5 %')", printed=Printed("5", "%"),
+              chapter=ch, compute=zener_spread, basis="BZX79 datasheet",
+              reason="the datasheet's V_Z limits, 7.7 and 8.7 V at 5 mA, are 8.2 V -6.1 % and +6.1 %; +-5 % is the "
+                     "C series' nominal band, not the part's limits",
+              consequence="the zener's share of the trip tolerance is +-6.1 %, not +-5 % (eq 13: V_cs is "
+                          "proportional to V_D1); the note's 5 % also sizes the level shift (7.79 V, see "
+                          "an94002-shift-7v7) and the drift's reference (0.95 x 8.2 V)"),
+        Claim(id="an94002-shift-7v7", where=f"{NAME} 2.4 vs BZX79 datasheet",
+              quantity="level shift at the datasheet's lowest V_Z (7.7 V), V_cs = 0: at least 2 V required",
+              printed=Printed("2", "V"), relation="<=", chapter=ch, basis="BZX79 datasheet",
+              compute=lambda p: level_shift(FACTS["bzx79_vz"].value[0], p["r12"], p["r13"]),
+              reason="7.7 V x 5.6 k / 21.6 k = 1.996 V, 4 mV short of the 2 V the note sizes R12 and R13 for (it "
+                     "used 8.2 V - 5 % = 7.79 V: 2.02 V)",
+              consequence="harmless at 25 C, where the LM358 needs 1.5 V, and at the trip point (V_cs = 100 mV) the "
+                          "inputs sit 2.07 V down; but the note's own rule then picks R13 = 15 k, not 16 k (16 k needs "
+                          "V_Z >= 7.71 V), and at 0 C the zener's drift (-155 mV) leaves 1.96 V where the LM358 needs "
+                          "2 V over temperature"),
         Claim(id="an94002-zener-drift", where=WHERE, quantity="zener drift over 25 C +- 25 C",
               printed=Printed("150", "mV"), chapter=ch, compute=zener_drift,
               reason="6.2 mV/K x 25 K = 155 mV, printed to two figures"),

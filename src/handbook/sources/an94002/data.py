@@ -118,6 +118,7 @@ FACTS = {
     "cap_st_current": Fact((1.5e-6, 2.0e-6, 2.5e-6), f"{TDA5144}, CAP-ST charge/discharge current"),
     "v_mot_range": Fact((1.7, 16.0), f"{TDA5144}, V_MOT 1.7 to 16 V"),
     "bc557_vbe": Fact((0.55, 0.62, 0.70), "BC557 datasheet (one maker): V_BE(on) at 2 mA min/typ/max"),
+    "bzx79_vz": Fact((7.7, 8.7), f"{BZX79}: BZX79-C8V2 V_Z 7.7 to 8.7 V at 5 mA (the C series is 'about +-5 %')"),
     "bzx79_tc": Fact((0.03e-2, 0.08e-2), f"{BZX79}: temperature coefficient +0.03 to +0.08 %/K"),
 }
 

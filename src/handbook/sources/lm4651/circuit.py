@@ -65,6 +65,14 @@ def p_switch(f_sw, p_out, **times):
     return x * p_out / (1 - x)
 
 
+def p_switch_edges(f_sw, p_out, r_load, supply=20.0, t_rise=DEVICE["t_rise"], t_fall=DEVICE["t_fall"]):
+    """The textbook switching loss the datasheet does not use: V I (t_r + t_f) f_sw, with V the 2 V_s each
+    half-bridge swings (the LM4652 table measures t_r and t_f at V_DS = 40 V) and I the rms output current.
+    Each edge of each half-bridge dissipates about V I t / 2; two half-bridges switch every period.
+    Only the edges: no term for the over-modulation pulse, during which the MOSFETs are fully on or off."""
+    return 2 * supply * (p_out / r_load) ** 0.5 * (t_rise + t_fall) * f_sw
+
+
 def p_conduction(p_out, r_load, rds_on=DEVICE["rds_on_hot"]):
     """I_rms^2 x 2 R_DS(on): two MOSFETs of the bridge conduct at any time."""
     return p_out / r_load * 2 * rds_on

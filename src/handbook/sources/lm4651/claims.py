@@ -58,6 +58,17 @@ def _v_out(p):
     return (p["p_out"] * p["r_load"]) ** 0.5
 
 
+def _p_system_at(p, p_out, f_sw):
+    """The datasheet's own loss method (eq 9, eq 10, conduction, about 1 W in the LM4651) at another operating
+    point of its system table (4 ohm, as the table), with the Example's times and R_DS(on)."""
+    return p_switch(f_sw, p_out, **_times(p)) + p_conduction(p_out, 4.0, p["rds_on_hot"]) + p["p_driver"]
+
+
+#: the system table's total quiescent current: two values whose conditions did not survive the OCR (237 and
+#: 124 mA); the smaller is used
+I_CQ_SYSTEM = 124e-3
+
+
 def build() -> list[Claim]:
     return [
         Claim(id="lm4651-f-4k", where=f"{NAME} table, R_OSC = 4 k",
@@ -72,6 +83,18 @@ def build() -> list[Claim]:
               printed=Printed("200", "kHz", sig=3), compute=lambda p: f_sw_for(0.0),
               reason="eq 5 gives 1e9 / 4000 = 250 kHz, above the 225 kHz limit", basis="eq 5", chapter=OSC,
               consequence="eq 5 overstates the top of the range; stay below 225 kHz"),
+        Claim(id="lm4651-f-pin-15k5", where=f"{NAME} pin 16 (OSC) description",
+              quantity="switching frequency at R_OSC = 15.5 k ('from 75kHz')", printed=Printed("75", "kHz"),
+              compute=lambda p: f_sw_for(15.5e3), basis="eq 5", chapter=OSC,
+              reason="eq 5 gives 1e9 / 19500 = 51.3 kHz; the LM4651 table gives 65 kHz at the smaller 15 k, so 75 kHz "
+                     "at 15.5 k contradicts the table as well",
+              consequence="the pin description overstates the bottom of the range by 46 % against eq 5; design with "
+                          "eq 5 and its table spread (-20 %/+23.5 %), not with the pin description"),
+        Claim(id="lm4651-f-pin-0", where=f"{NAME} pin 16 (OSC) description",
+              quantity="switching frequency at R_OSC = 0 ('to 225kHz')", printed=Printed("225", "kHz"),
+              compute=lambda p: f_sw_for(0.0), basis="eq 5", chapter=OSC,
+              reason="eq 5 gives 1e9 / 4000 = 250 kHz; the LM4651 table gives 200 kHz at R_OSC = 0",
+              consequence="three tops for one resistor (200, 225, 250 kHz): above 200 kHz measure f_sw on the board"),
         Claim(id="lm4651-dead-time", where=f"{NAME} table T_dead and eq 4", quantity="dead time at R_DLY = 0",
               printed=Printed("27", "ns"), compute=lambda p: dead_time(0.0),
               reason="eq 4 gives 1.7e-12 x 500 = 0.85 ns at R_DLY = 0", basis="eq 4", chapter=OSC,
@@ -149,6 +172,34 @@ def build() -> list[Claim]:
         Claim(id="lm4651-system-pd", where=f"{NAME} system table", quantity="system dissipation: LM4652 + LM4651",
               printed=P_SYSTEM, compute=lambda p: _p_4652(p) + p["p_driver"],
               reason="20.97 W + about 1 W in the LM4651", chapter=TH),
+        Claim(id="lm4651-pd-75k", where=f"{NAME} system table, P_d at f_SW = 75 kHz, P_O = 135 W",
+              quantity="LM4651 + LM4652 dissipation at 75 kHz and 135 W, by the Example's method",
+              printed=Printed("22", "W"), compute=lambda p: _p_system_at(p, 135.0, 75e3),
+              basis="eq 9, eq 10 and the Example Design's method", chapter=TH,
+              reason="(25 + 26 + 350) ns x 75 kHz = 3.01 %: 4.19 W switching + 135/4 x 0.46 = 15.53 W conduction "
+                     "+ 1 W in the LM4651 = 20.71 W (20.28 W with the table's 310 ns)",
+              consequence="the method that matches the table at 125 kHz (22 W) falls 1.3 W (6 %) short of it at "
+                          "75 kHz: eq 9 is an empirical fit, not a loss law; where the operating point is a table "
+                          "row, size the heat sink from the table's 22 W"),
+        Claim(id="lm4651-eta-5w", where=f"{NAME} system table, efficiency at P_O = 5 W vs I_CQ",
+              quantity="efficiency at 5 W if the quiescent current still flows (upper bound)",
+              printed=Printed("55", "%"), relation="<=",
+              compute=lambda p: 5.0 / (5.0 + I_CQ_SYSTEM * 40.0),  # the table is at +-20 V
+              basis="system table, I_CQ", chapter=TH,
+              reason="the table's total quiescent current, 124 mA (the smaller of the row's two values, 237 and 124 mA; "
+                     "its conditions did not survive the OCR), at +-20 V is 4.96 W of loss before any output: at "
+                     "5 W out the efficiency is at most 5 / 9.96 = 50.2 %; 55 % allows only 4.09 W (102 mA)",
+              consequence="one of the two figures is optimistic: expect about 50 % at 5 W, or check the idle "
+                          "current on the board (the book's idle-loss model uses the 55 % and says so)"),
+        Claim(id="lm4651-l1-rating", where=f"{NAME} recommended components, L1 (CoilCraft PCV-0-473-05, 47 uH, 5 A)",
+              quantity="current rating of the recommended 47 uH choke against the Example's rms current",
+              printed=Printed("5", "A"), relation=">=", compute=lambda p: (p["p_out"] / p["r_load"]) ** 0.5,
+              basis="Example Design's output current", chapter=TH,
+              reason="125 W into 4 ohm is 5.59 A rms (7.91 A peak); the CoilCraft choke is rated 5 A, the J.W. Miller "
+                     "50 uH 5.6 A (0.2 % above the rms current) and 68 uH 7.3 A",
+              consequence="at full continuous power the 5 A choke carries 25 % more I^2 than its rating; if the "
+                          "ratings are saturation currents, all three lie below the 7.9 A peak: choose L1 for the "
+                          "peak of the output current plus half the ripple"),
         Claim(id="lm4651-eps0", where=f"{NAME} eq (8)", quantity="vacuum permittivity in pF/in",
               printed=Printed("0.22479", "1"), compute=lambda p: EPS0_PF_PER_IN,
               reason="8.8542e-12 F/m x 0.0254 m/in = 0.22490 pF/in", basis="CODATA", chapter=OSC,

@@ -71,6 +71,54 @@ ERRATA = (
                 "values are three different amplifiers",
                 "figure 1's 4.7 k with 1 uF cuts at 34 Hz, into a subwoofer's band: with 4.7 k use at least "
                 "4.7 uF (6.8 Hz)"),
+    TextErratum("lm4651-t-frange", f"{NAME}, Features, Oscillator Control, pin 16 and the LM4651 table",
+                "the switching-frequency range is printed four ways: 50 to 200 kHz (Features), 50 to 225 kHz "
+                "(Oscillator Control), 75 to 225 kHz for R_OSC = 15.5 k to 0 (pin 16) and 65 to 200 kHz for "
+                "R_OSC = 15 k to 0 (LM4651 table)",
+                "eq 5 gives 51.3 to 250 kHz over 15.5 k to 0; a larger R_OSC runs slower, so the table's 65 kHz at "
+                "15 k and pin 16's 75 kHz at 15.5 k cannot both hold (see lm4651-f-pin-15k5 and lm4651-f-pin-0)",
+                "the book takes 50 to 225 kHz (Oscillator Control) as the usable range and the table's typical "
+                "points for eq 5's spread; above 200 kHz, measure"),
+    TextErratum("lm4651-t-170w", f"{NAME}, title and Key Specifications",
+                "'170 W' output power into 4 ohm at < 10 % THD, with no switching frequency stated",
+                "the system table, specified at f_SW = 125 kHz unless stated, gives 155 W at 10 % THD (125 W at "
+                "1 %); 170 W is its f_SW = 75 kHz row",
+                "at the recommended 125 to 145 kHz expect 155 W at 10 % THD and 125 W at 1 %; 170 W needs 75 kHz, "
+                "with the worse THD+N below 10 W that the datasheet warns of"),
+    TextErratum("lm4651-t-standby", f"{NAME}, Key Specifications, system table and Standby Function",
+                "standby attenuation '>100 dB (Min)', '>115 dB' and '>120 dB'",
+                "the key specification gives 100 dB minimum, the system table >115 dB (typical column), the "
+                "Standby Function text 'complete (>120dB)'",
+                "none in practice; design with the 100 dB minimum, not the text's 120 dB"),
+    TextErratum("lm4651-t-theta-ja", f"{NAME}, thermal resistances vs note 3",
+                "the LM4651's junction-to-ambient resistance is 52 K/W (thermal table) and 62 K/W (note 3)",
+                "the thermal table lists 'LM4651 N Package theta_JA 52 C/W'; note 3 derates the LM4651 'based on "
+                "... theta_JA = 62 C/W'",
+                "derate with 62 K/W, the safe side: at the LM4651's 1 W the die runs 62 K above ambient, not 52 K "
+                "(112 C at the example's 50 C)"),
+    TextErratum("lm4651-t-ilimit", f"{NAME}, eq (3), pin 18 and Example Design vs LM4652 ratings",
+                "the short-circuit limit can only be set at or above 10 A, the LM4652's absolute maximum output "
+                "current",
+                "eq 3 gives 10 A only with R_SCKT open and more with any R_SCKT (11 A with the example's 100 k; pin "
+                "18: 'Minimum setting is 10A'); the absolute maximum ratings give the LM4652's output current as "
+                "10 A (the OCR separated names from values: 10 A is the only current among them), and the LM4652 "
+                "table's saturation drain current is 8 A minimum, 10 A typical",
+                "the limit guards against a short, not the rating: the example's 11 A is 10 % above the absolute "
+                "maximum, and the advice to raise it for loads below 4 ohm goes further; keep the output current "
+                "plus the inductor ripple below 10 A by design, as the Example Design asks"),
+    TextErratum("lm4651-t-pin15", f"{NAME}, LM4652 and LM4651 pin descriptions",
+                "the LM4652 pin table names both pin 7 and pin 15 'VO2'",
+                "the LM4651's pin 14 (FBK1) is to be 'connected to the feedback filter from V_O1 (pin 15 on the "
+                "LM4652)' and pin 19 (FBK2) to 'V_O2 (pin 7)': pin 15 is VO1 (the OCR may have misread a subscript)",
+                "read pin 15 as VO1 feeding FBK1; swapping FBK1 and FBK2 would invert the feedback"),
+    TextErratum("lm4651-t-gain-r", f"{NAME}, Error Amplifier, components table and Example Design",
+                "which resistors set the gain: 'R_f and R1' (Error Amplifier), R_f 'sets the gain and bandwidth' "
+                "(components table), R1, R2, R_f11 and R_f12 (eq 12); and the Example inserts R_f and V_CC into "
+                "eq 12, which contains neither",
+                "eq 12 as printed in the components table and the Example Design has only R1, R2, R_f11 and R_f12, "
+                "and with them reproduces the Example's 7.5 (R2 = 0.7 R1)",
+                "use eq 12 for the gain and eq 7 (R_f C_f) for the error amplifier's pole; the datasheet does not "
+                "say how R_f enters the gain, so confirm the gain on the built amplifier"),
     TextErratum("lm4651-t-supply", f"{NAME}, Example Design",
                 "the supply (+-20 V) comes from a graph that did not survive",
                 "the electrical tables are specified at +-20 V, 4 ohm, 125 kHz, consistent with the choice",

@@ -4,7 +4,8 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics import units as u
 
-from ...core.equation import Equation
+from ...core.claim import Printed
+from ...core.equation import Equation, TablePoint
 from .data import NAME
 
 V, A, F, S, OHM, W, K, HZ = u.volt, u.ampere, u.farad, u.second, u.ohm, u.watt, u.kelvin, u.hertz
@@ -25,55 +26,85 @@ def _corner(r, c):
     return sp.solve(sp.Eq(w * r * c, 1), w)[0] / (2 * sp.pi)
 
 
+#: the label of an empirical equation's "derived" line: there is no derivation, only the source's own figures
+NO_LAW = "none: the datasheet does not show the circuit; the printed form at the datasheet's own figures"
+_KOHM = r"\,\mathrm{k\Omega}"
+
+
+def _pt(where, at, inputs, text, unit, sig=None, through=None) -> TablePoint:
+    return TablePoint(where=where, at=at, inputs=inputs, figure=Printed(text, unit, sig), through=through)
+
+
 def eq1() -> Equation:
     return Equation(
         id="lm4651-eq1", source=f"{NAME}, eq (1)", title="Start-up time", lhs=t, lhs_unit=S, lhs_scale=S,
-        printed=sp.Integer(84000) * n[Cs], scales={n[Cs]: Cs / F}, derived=sp.solve(sp.Eq(I * t, Cs * dV), t)[0],
-        units={Cs: F, I: A, dV: V}, values={I: A / 84000, dV: V},
-        law="charge balance on C_START; the datasheet gives only dV / I = 84 k (taken as 1 V / 11.9 uA)",
-        note="The component table prints T_START = 8.5e4 C_START, eq 1 8.4e4.")
+        printed=sp.Integer(84000) * n[Cs], scales={n[Cs]: Cs / F}, units={Cs: F}, law=NO_LAW, empirical=True,
+        fitted_to="an unstated figure: the datasheet gives neither the START pin's charge current nor its voltage "
+                  "swing, only their ratio, 84 k (s/F)",
+        table=(_pt("Start Up Sequence: C_START = 10 uF checks 'approximately every second'",
+                   r"C_{START} = 10\,\mu\mathrm{F}", {Cs: 10e-6}, "1", "s"),),
+        note="The component table prints T_START = 8.5e4 C_START, eq 1 8.4e4 (1.2 % apart).")
 
 
 def eq2() -> Equation:
     return Equation(
         id="lm4651-eq2", source=f"{NAME}, eq (2)", title="C_START for a start-up time", lhs=Cs, lhs_unit=F,
-        lhs_scale=F, printed=n[t] / 85000, scales={n[t]: t / S}, derived=t * I / dV, units={t: S, I: A, dV: V},
-        values={I: A / 84000, dV: V}, law="eq 1 solved for C_START",
+        lhs_scale=F, printed=n[t] / 85000, scales={n[t]: t / S}, units={t: S}, law=NO_LAW, empirical=True,
+        fitted_to="the component table's T_START = 8.5e4 C_START, solved for C_START (eq 1 multiplies by 8.4e4)",
+        table=(_pt("Start Up Sequence: 'approximately every second' with C_START = 10 uF", r"t_{START} = 1\,\mathrm{s}",
+                   {t: 1.0}, "10", "uF"),),
         note="eq 2 divides by 8.5e4 where eq 1 multiplies by 8.4e4 (1.2 % apart).")
 
 
 def eq3() -> Equation:
     return Equation(
         id="lm4651-eq3", source=f"{NAME}, eq (3)", title="Short-circuit current limit", lhs=I, lhs_unit=A,
-        lhs_scale=A, printed=10 ** 5 / (10 ** 4 * n[Rp] / (10 ** 4 + n[Rp])), scales={n[Rp]: Rp / OHM},
-        derived=Vk * (1 / Rint + 1 / Rp), units={Rp: OHM, Rint: OHM, Vk: V},
-        values={Rint: 10 ** 4 * OHM, Vk: 10 ** 5 * V},
-        law="an internal 10 k in parallel with R_SCKT (conductances add) scales a fixed reference",
-        note="The 1e5 hides a unit of volts (an internal reference times a current gain).")
+        lhs_scale=A, printed=10 ** 5 / (10 ** 4 * n[Rp] / (10 ** 4 + n[Rp])), scales={n[Rp]: Rp / OHM}, units={Rp: OHM},
+        law=NO_LAW, empirical=True,
+        fitted_to="the internal 10 A minimum (pin 18: 'Minimum setting is 10A'), reached as R_SCKT grows without "
+                  "bound; the form (a 10 k in parallel with R_SCKT scaling a reference, its 1e5 hiding a unit of "
+                  "volts) is what the printed numbers imply, not a circuit the datasheet shows",
+        table=(_pt("pin 18 and Current Limiting: 'a minimum of 10A', R_SCKT open", r"R_{SCKT} \to \infty",
+                   {Rp: 1e15}, "10", "A", sig=2),
+               _pt("Example Design: 'With R_SCKT equal to 100k, the current limit is 10A'", r"R_{SCKT} = 100" + _KOHM,
+                   {Rp: 100e3}, "10", "A", sig=2)))
 
 
 def eq4() -> Equation:
     return Equation(
         id="lm4651-eq4", source=f"{NAME}, eq (4)", title="Dead time", lhs=T, lhs_unit=S, lhs_scale=S,
-        printed=sp.Rational(17, 10 ** 13) * (500 + n[R]), scales={n[R]: R / OHM}, derived=Cint * (Rint + R),
-        units={R: OHM, Rint: OHM, Cint: F}, values={Cint: sp.Rational(17, 10 ** 13) * F, Rint: 500 * OHM},
-        printed_tex=r"1.7 \times 10^{-12} (500 + R_{DLY})", law="an RC delay: 1.7 pF charged through 500 ohm + R_DLY",
-        note="As printed it gives 0.85 ns at R_DLY = 0 against the table's 27 ns.")
+        printed=sp.Rational(17, 10 ** 13) * (500 + n[R]), scales={n[R]: R / OHM}, units={R: OHM},
+        printed_tex=r"1.7 \times 10^{-12} (500 + R_{DLY})", law=NO_LAW, empirical=True,
+        fitted_to="an unstated figure: the only dead time the datasheet prints, 27 ns at R_DLY = 0, is 32 times the "
+                  "printed form's 0.85 ns there, and the slope (1.7 ns per k) has no figure to check it against",
+        table=(_pt("LM4651 table, T_dead at R_DLY = 0", r"R_{DLY} = 0", {R: 0.0}, "27", "ns"),),
+        note="As printed it gives 0.85 ns at R_DLY = 0 against the table's 27 ns; the design uses 27 ns plus eq 4's "
+             "slope.")
 
 
 def eq5() -> Equation:
     return Equation(
         id="lm4651-eq5", source=f"{NAME}, eq (5)", title="Switching frequency", lhs=f, lhs_unit=HZ, lhs_scale=HZ,
-        printed=10 ** 9 / (4000 + n[R]), scales={n[R]: R / OHM}, derived=1 / (Cint * (Rint + R)),
-        units={R: OHM, Rint: OHM, Cint: F}, values={Cint: F / 10 ** 9, Rint: 4000 * OHM},
-        law="an RC oscillator: period proportional to 1 nF x (4 k + R_OSC)")
+        printed=10 ** 9 / (4000 + n[R]), scales={n[R]: R / OHM}, units={R: OHM}, law=NO_LAW, empirical=True,
+        fitted_to="125 kHz at R_OSC = 4 k (the LM4651 table's duty-cycle row), for R_DLY = 0; a period linear in "
+                  "R_OSC is the form's assumption, the oscillator is not shown",
+        table=(_pt("LM4651 table, f_SWerror row", r"R_{OSC} = 4" + _KOHM, {R: 4e3}, "125", "kHz"),
+               _pt("LM4651 table, f_SW at R_OSC = 15 k", r"R_{OSC} = 15" + _KOHM, {R: 15e3}, "65", "kHz"),
+               _pt("LM4651 table, f_SW at R_OSC = 0", r"R_{OSC} = 0", {R: 0.0}, "200", "kHz", sig=3),
+               _pt("pin 16 description, 15.5 k", r"R_{OSC} = 15.5" + _KOHM, {R: 15.5e3}, "75", "kHz"),
+               _pt("pin 16 description, 0 ohm", r"R_{OSC} = 0", {R: 0.0}, "225", "kHz")),
+        note="The table's points lie 20 % below and 23.5 % above eq 5; the design carries that spread as eq 5's "
+             "tolerance.")
 
 
 def eq6() -> Equation:
     return Equation(
         id="lm4651-eq6", source=f"{NAME}, eq (6)", title="R_OSC for a frequency", lhs=R, lhs_unit=OHM, lhs_scale=OHM,
-        printed=10 ** 9 / n[f] - 4000, scales={n[f]: f / HZ}, derived=sp.solve(sp.Eq(f, 1 / (Cint * (Rint + R))), R)[0],
-        units={f: HZ, Rint: OHM, Cint: F}, values={Cint: F / 10 ** 9, Rint: 4000 * OHM}, law="eq 5 solved for R_OSC")
+        printed=10 ** 9 / n[f] - 4000, scales={n[f]: f / HZ}, units={f: HZ}, law=NO_LAW, empirical=True,
+        fitted_to="eq 5 solved for R_OSC (R_DLY = 0; the text adds about 2 k for R_DLY = 5 k)",
+        table=(_pt("LM4651 table, f_SWerror row", r"f_{SW} = 125\,\mathrm{kHz}", {f: 125e3}, "4", "kohm"),
+               _pt("LM4651 table, 65 kHz at R_OSC = 15 k", r"f_{SW} = 65\,\mathrm{kHz}", {f: 65e3}, "15", "kohm"),
+               _pt("LM4651 table, 200 kHz at R_OSC = 0", r"f_{SW} = 200\,\mathrm{kHz}", {f: 200e3}, "0", "kohm")))
 
 
 def eq7() -> Equation:
@@ -91,11 +122,30 @@ def eq8() -> Equation:
         law="parallel-plate capacitor", note="0.22479 pF/in is 0.05 % below eps0 = 0.22490 pF/in.")
 
 
+def _pd_system(x, p_out, f_sw):
+    """LM4652 + LM4651 dissipation by the datasheet's method at (p_out, f_sw): eq 10 with the loss fraction x,
+    conduction through 2 x 0.230 ohm into 4 ohm, and about 1 W in the LM4651 (Example Design)."""
+    return x * p_out / (1 - x) + p_out / 4 * 2 * 0.230 + 1.0
+
+
 def eq9() -> Equation:
     return Equation(
         id="lm4651-eq9", source=f"{NAME}, eq (9)", title="Switching loss fraction", lhs=x, lhs_unit=sp.Integer(1),
-        printed=(tr + tf + tom) * f, derived=(tr + tf + tom) / (1 / f), units={tr: S, tf: S, tom: S, f: HZ},
-        law="the fraction of each period spent in the edges and the over-modulation pulse")
+        printed=(tr + tf + tom) * f, units={tr: S, tf: S, tom: S, f: HZ}, empirical=True,
+        law="none: an estimate, not a law; checked through eq 10 against the system table's dissipation",
+        fitted_to="no stated data; with the Example's 350 ns, eq 10, the conduction loss and about 1 W in the "
+                  "LM4651 it gives the system table's 22 W at 125 W and 125 kHz (22.0 W), as the Example Design "
+                  "points out. It is not a switching-loss law: during the "
+                  "over-modulation pulse the MOSFETs are fully on or off, not lossy, so the T_OVERMOD term stands in "
+                  "for losses the datasheet does not name (gate drive, ripple current, the idle loss)",
+        table=(_pt("system table, P_d at 125 W, 125 kHz (typical 310 ns)", r"f_{SW} = 125\,\mathrm{kHz}",
+                   {tr: 25e-9, tf: 26e-9, tom: 310e-9, f: 125e3}, "22", "W",
+                   through=lambda v: _pd_system(v, 125.0, 125e3)),
+               _pt("system table, P_d at 135 W, 75 kHz (typical 310 ns)", r"f_{SW} = 75\,\mathrm{kHz}",
+                   {tr: 25e-9, tf: 26e-9, tom: 310e-9, f: 75e3}, "22", "W",
+                   through=lambda v: _pd_system(v, 135.0, 75e3))),
+        note="A switching-loss estimate from the edges alone, V I (t_r + t_f) f with 40 V, 5.59 A and the LM4652 "
+             "table's 25 + 26 ns at 125 kHz, is 1.4 W against eq 9 and 10's 6.6 W.")
 
 
 def eq10() -> Equation:
