@@ -42,6 +42,14 @@ RERUNS = {
     "tda5341/commutation": {"inertia": 1e-6, "pole_pairs": 4, "start_current": 0.3},
 }
 
+# sentences that state a value equal to an input's note value on purpose: the value is fixed there, whatever
+# the parameters cell holds (chapter -> (token, a phrase of the sentence, why))
+FIXED = {
+    "lm4651/equations": [("4 Ω", "SPICE puts the corner", "the simulation runs both loads, 4 and 8 ohm, always"),
+                         ("4 Ω", "The residue at the load is", "the 4 ohm run of the two"),
+                         ("4 Ω", "Two runs per load", "the two loads simulated")],
+}
+
 # phrases only the note's inputs make true: they may stand in the committed chapter, never in a re-run
 NOTE_ONLY = {
     "an94002/commutation_delay": ["is the note's choice", "note's currents, note's capacitor",
@@ -133,15 +141,21 @@ def sentences(static: list[str]) -> list[str]:
     """The static prose cut into sentences (a table row counts as one)."""
     out = []
     for text in static:
-        for para in re.split(r"\n\s*\n|\n(?=\|)", text):
+        for para in re.split(r"\n\s*\n", text):
+            lines = para.strip().splitlines()
+            if lines and lines[0].startswith("|"):  # a table: each row read with its header
+                out += [f"{lines[0]} {row}" for row in lines[2:]]
+                continue
             out += [s.strip() for s in re.split(r"(?<=[.!?:])\s+(?=[A-Z*])", " ".join(para.split()))]
     return out
 
 
-def _static_hits(token: str, unit: str, static: list[str], skip_source: bool = False) -> list[str]:
+def _static_hits(token: str, unit: str, static: list[str], skip_source: bool = False, fixed=()) -> list[str]:
     tail = rf"[ \u00a0]*{re.escape(unit)}(?![\w/])" if unit else r"(?![\w]|\.\d)"
     pat = re.compile(rf"(?<![\w.]){re.escape(token)}{tail}")
-    return sorted({s for s in sentences(static) if pat.search(s) and not (skip_source and _about_the_note(s))})
+    allowed = [phrase for tok, phrase, _why in fixed if tok == f"{token} {unit}".strip()]
+    return sorted({s for s in sentences(static) if pat.search(s) and not (skip_source and _about_the_note(s))
+                   and not any(phrase in s for phrase in allowed)})
 
 
 def param_units(chapter: str) -> dict:
@@ -219,7 +233,7 @@ def problems(chapter: str, note_nb: dict, other_nb: dict) -> list[str]:
             default = param_default(note_nb, key)
             for token, unit in renderings(default, units[key]):
                 found += [f"input {key} = {token} {unit}, typed in: {line}"
-                          for line in _static_hits(token, unit, static, skip_source=True)]
+                          for line in _static_hits(token, unit, static, True, FIXED.get(chapter, ()))]
     page = "\n".join(shown) + "\n" + outputs_markdown(other_nb)
     found += [f"still says {p!r}" for p in NOTE_ONLY.get(chapter, []) if p in page]
     return list(dict.fromkeys(found))

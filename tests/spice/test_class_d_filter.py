@@ -5,7 +5,7 @@ import math
 import re
 
 import pytest
-from drawn_parts import drawn_labels
+from drawn_parts import assert_same_parts, drawn_labels
 
 from handbook.sources.lm4651 import circuit as eqs
 from handbook.spice import class_d
@@ -14,6 +14,11 @@ from handbook.spice.circuit import evaluate
 BUILT = (class_d.circuit, class_d.circuit_8ohm, class_d.ripple, class_d.ripple_8ohm)
 
 
+
+
+@pytest.mark.parametrize("build", BUILT)
+def test_drawing_netlist_and_parts_are_one_set_both_ways(build):
+    assert_same_parts(build(), {"EPROBE": "the load voltage as one node, for .meas (a probe)"})
 
 
 def _line(netlist: str, ref: str) -> list[str]:

@@ -1,4 +1,5 @@
-"""The third leg for the linear parts: lcapy derives each from its netlist, sympy compares with the registry."""
+"""The third leg for the linear parts: lcapy derives each from a netlist written from the circuit's own parts
+and node maps (the ones the SPICE netlist and the schematic use), and sympy compares with the registry."""
 import pytest
 
 lc = pytest.importorskip("handbook.spice.lcapy_checks")
@@ -12,3 +13,53 @@ def test_bridge_filter_from_its_netlist_is_the_designs_second_order_form():
 def test_timer_from_its_netlist_is_eq_5s_charge_balance():
     out = lc.timer_from_netlist()
     assert out["same"], (out["lcapy"], out["registry"])
+
+
+def test_speed_loop_divider_is_eq_10():
+    out = lc.speed_from_netlist()
+    assert out["same"] and out["same_as_printed"], (out["lcapy"], out["registry"])
+
+
+def test_an93008_eq_1_and_eq_6_from_the_limiters_parts():
+    out = lc.an93008_from_netlist()
+    assert out["eq1"]["same"], (out["eq1"]["lcapy"], out["eq1"]["registry"])
+    assert out["eq6"]["same"], (out["eq6"]["lcapy"], out["eq6"]["registry"])
+
+
+def test_an94002_eq_13_with_the_parts_values():
+    out = lc.compare()
+    assert out["same_as_derived"] and out["same_as_printed"] and out["free_of_loop_gain"]
+    lcapy_value, equation = out["at_parts"]
+    assert lcapy_value == pytest.approx(equation, rel=1e-12) and lcapy_value == pytest.approx(0.1, rel=2e-3)
+
+
+def test_the_lcapy_netlists_are_the_spice_parts():
+    from handbook.spice import class_d, limiters, speed
+
+    text = lc.opamp_netlist()
+    for p in limiters.opamp_parts(limiters.opamp_defaults()):
+        assert p.ref in text.replace("VD1", "D1").replace("E_U1", "U1").replace("G_IM", "IM"), p.ref
+    assert "R12 cs inp {R12}" in text and "R13 inp z {R13}" in text  # placed by OPAMP_NODES
+    assert "R3 vmot inp {R3}" in lc.speed_netlist() and speed.NODES["R3"] == "R3 vmot inp"
+    assert "L1 o1 outp {L1}" in lc.filter_netlist() and class_d.NODES["L1"] == "o1 outp"
+
+
+def test_a_part_moved_in_the_node_map_moves_in_lcapy(monkeypatch):
+    """Swap R12 and R13 in the node map the SPICE netlist is written from: lcapy's derivation no longer
+    equals eq 13 (so the leg reads the circuit, not a copy of it)."""
+    from handbook.spice import limiters
+
+    nodes = dict(limiters.OPAMP_NODES)
+    nodes["R12"], nodes["R13"] = "cs{s} inp{s}".replace("cs", "z"), "inp{s} cs{s}"
+    monkeypatch.setattr(limiters, "OPAMP_NODES", nodes)
+    assert not lc.compare()["same_as_derived"]
+
+
+def test_a_part_without_a_stand_in_is_an_error(monkeypatch):
+    from handbook.spice import limiters
+    from handbook.spice.circuit import Part
+
+    original = limiters.opamp_parts
+    monkeypatch.setattr(limiters, "opamp_parts", lambda p: original(p) + (Part("Q9", "BC547"),))
+    with pytest.raises(ValueError, match="Q9"):
+        lc.opamp_netlist()

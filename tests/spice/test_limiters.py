@@ -1,14 +1,14 @@
 """The current limiters in SPICE: drawing and netlist hold the same parts, every check agrees within its
 stated tolerance, the corner shows the LM358's input-range failure, a design is confirmed at its worst
 corners, and lcapy's derivation of the trip point equals the registry's."""
+import dataclasses
 import functools
-import re
 
 import pytest
+from drawn_parts import assert_same_parts
 
-from handbook.spice import limiters, runner
-from handbook.spice.circuit import evaluate
-from handbook.spice.limiter_drawings import label, labels
+from handbook.spice import limiters, models, runner
+from handbook.spice.circuit import Part, evaluate
 
 BUILDERS = (limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limiters.supply_referenced)
 
@@ -20,17 +20,29 @@ def simulated(builder):
     return c, runner.run(c.netlist)
 
 
+#: netlist elements that are not parts of the limiters, and why
+AUX = {r"VAM(_\d+)?": "the motor current's ammeter (0 V)", r"VC(_\d+)?": "T2's collector ammeter (0 V)",
+       r"BP\w+": "a probe: a node holding a voltage difference for .meas"}
+
+
 @pytest.mark.parametrize("builder", BUILDERS, ids=lambda b: b.__name__)
-def test_drawing_and_netlist_hold_the_same_parts(builder):
+def test_drawing_netlist_and_parts_are_one_set_with_one_set_of_values(builder):
     c = builder()
-    drawn = labels(c.draw())
-    parts = {p.ref: label(p).partition("\n")[2] for p in c.parts}
-    assert {k: drawn.get(k) for k in parts} == parts
-    names = {line.split()[0].upper(): line for line in c.netlist.splitlines() if line and line[0] not in "*."}
-    for p in c.parts:
-        line = names[limiters.NAMES.get(p.ref, p.ref).upper()]
-        value = p.value if isinstance(p.value, str) else f"{p.value:.6g}"
-        assert value in re.split(r"[\s()]+", line), (p.ref, line)
+    copies = {"VS_1": c.part("VS").value * 0.9} if c.id == "limiter-supply" else {}  # its 12 V - 10 % copy
+    assert_same_parts(c, AUX, copies)
+
+
+def test_the_part_set_test_sees_a_part_missing_from_either_side():
+    c = limiters.opamp()
+    extra = dataclasses.replace(c, parts=c.parts + (Part("R99", 1e3, "ohm"),))
+    with pytest.raises(AssertionError, match="a part not drawn"):
+        assert_same_parts(extra, AUX)
+    dropped = dataclasses.replace(c, netlist=c.netlist.replace("R14 z 0 750", "R14 z 0 820"))
+    with pytest.raises(AssertionError, match="R14"):
+        assert_same_parts(dropped, AUX)
+    stray = dataclasses.replace(c, netlist=c.netlist.replace("VAM cs csm 0", "VAM cs csm 0\nR15 cs 0 1e6"))
+    with pytest.raises(AssertionError, match="R15 is neither a part"):
+        assert_same_parts(stray, AUX)
 
 
 @pytest.mark.parametrize("builder", BUILDERS, ids=lambda b: b.__name__)
@@ -80,3 +92,19 @@ def test_a_network_that_leaves_the_op_amp_latched_is_not_confirmed(ngspice):
 def test_lcapy_derives_eq_13_from_the_netlist():
     out = pytest.importorskip("handbook.spice.lcapy_checks").compare()
     assert out["same_as_derived"] and out["same_as_printed"] and out["free_of_loop_gain"]
+
+
+def test_one_transistor_trip_moves_59_mV_a_decade_of_collector_current(ngspice):
+    """From I_C = 0.2 mA to 10 mA (a factor 50) T2's V_BE rises by kT/q ln 50 = 25.69 mV x 3.912 = 100.5 mV at
+    25 C: the motor current where each is reached differs by that over R7 (0.8 ohm), 125.6 mA."""
+    c, out = simulated(limiters.one_transistor)
+    assert c.part("R7").value == pytest.approx(0.8)
+    assert out["i_on_high"] - out["i_on_low"] == pytest.approx(0.1005 / 0.8, rel=2e-3)
+    assert out["i_on_1"] == pytest.approx(models.BC557_VBE[1] / 0.8, rel=1e-3)  # 0.62 V / 0.8 ohm at 2 mA
+
+
+def test_chapter_table_says_which_checks_agree_by_construction(ngspice):
+    text = limiters.chapter_table(limiters.one_transistor()).data
+    assert "consistent (by construction)" in text and "agrees" in text
+    row_25 = next(line for line in text.splitlines() if "(I_C = 2 mA), 25 °C" in line)
+    assert "consistent (by construction)" in row_25 and "| agrees" not in row_25

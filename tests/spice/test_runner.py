@@ -24,8 +24,10 @@ def test_rc_charge_matches_the_exponential():
 
 @needs_ngspice
 def test_bad_netlist_and_failed_measurement_are_messages():
-    with pytest.raises(runner.SpiceError, match="broken deck: ngspice refused the netlist"):
+    with pytest.raises(runner.SpiceError, match="broken deck: malformed element line"):
         runner.run("* broken deck\nR1 a\n.tran 1u 1m\n.end\n")
+    with pytest.raises(runner.SpiceError, match="broken deck: ngspice refused the netlist"):
+        runner.run("* broken deck\nV1 a 0 1\nQ1 a a 0 NOSUCH\n.tran 1u 1m\n.end\n")
     with pytest.raises(runner.SpiceError, match="measurement tx failed"):
         runner.run("* never\nV1 a 0 1\nR1 a 0 1k\n.tran 1u 1m\n.meas tran tx WHEN v(a)=5\n.end\n")
 
@@ -86,5 +88,37 @@ def test_a_failing_circuit_is_reported_and_the_others_still_are(monkeypatch):
     monkeypatch.setattr(checks, "circuits", lambda: [broken, checks._load("decoupling:circuit")()])
     rows = checks.rows()
     bad = [r for r in rows if r["circuit"] == "broken"]
-    assert len(bad) == 1 and not bad[0]["agrees"] and "ngspice refused the netlist" in bad[0]["error"]
+    assert len(bad) == 1 and not bad[0]["agrees"] and "line 2: `R1 a`" in bad[0]["error"]
     assert any(r["circuit"] == "decoupling" and r["agrees"] for r in rows)
+
+
+def test_a_malformed_element_line_is_named_with_its_line_number():
+    # ngspice itself takes "R1 a" without a word (a 1 mOhm resistor): the runner reads the deck first
+    with pytest.raises(runner.SpiceError, match=r"line 3: `R1 a` \(a R element needs two nodes and a value\)"):
+        runner.run("* half a resistor\nV1 a 0 1\nR1 a\nR2 a 0 1k\n.op\n.end\n")
+
+
+@needs_ngspice
+def test_ngspice_refusing_a_line_is_mapped_to_the_decks_line():
+    # a transistor whose model does not exist: ngspice names its line 4; the message shows it
+    with pytest.raises(runner.SpiceError, match=r"at line 4: `Q1 c b 0 NOSUCH`.*could not find a valid modelname"):
+        runner.run("* missing model\nV1 c 0 1\nR1 c b 1k\nQ1 c b 0 NOSUCH\n.op\n.end\n")
+    with pytest.raises(runner.SpiceError, match=r"at line 5: `\.meas ac ph FIND par"):
+        runner.run("* bad meas\nV1 a 0 DC 0 AC 1\nR1 a n1 1k\nC1 n1 0 1n\n.meas ac ph FIND par('vp(n1)') AT=1k\n"
+                   ".ac dec 10 1 1e6\n.end\n")
+
+
+def test_waveform_or_reason_returns_a_sentence_not_a_traceback(monkeypatch):
+    out, why = runner.waveform_or_reason(lambda x: x * 2, 21)
+    assert (out, why) == (42, None)
+
+    def refused():
+        return runner.run("* half a resistor\nR1 a\n.op\n.end\n")
+
+    out, why = runner.waveform_or_reason(refused)
+    assert out is None and why.startswith("SPICE plot not drawn: half a resistor") and "line 2" in why
+    monkeypatch.setattr(runner.shutil, "which", lambda name: None)
+    out, why = runner.waveform_or_reason(runner.run, "* x\nR1 a 0 1\n.op\n.end\n")
+    assert out is None and why.startswith("SPICE plot skipped: ngspice is not installed")
+    with pytest.raises(ZeroDivisionError):  # anything else is a bug, and is raised
+        runner.waveform_or_reason(lambda: 1 / 0)

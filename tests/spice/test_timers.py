@@ -1,7 +1,7 @@
 """The TDA5144 timers (CAP-ST, CAP-CD/CAP-DC, CAP-TI) against the book's equations, their drawings against
 their netlists, and the commutation design confirmed at its worst corners."""
 import pytest
-from drawn_parts import assert_drawn_as_netlisted
+from drawn_parts import assert_same_parts
 
 from handbook.design import commutation
 from handbook.sources import an94002 as note
@@ -12,9 +12,37 @@ BUILDERS = (timers.start_oscillator, timers.commutation_delay, timers.watchdog)
 
 
 
+#: netlist elements that are not parts of the timers: the IC's logic, modelled, and why
+AUX = {"VDD": "the comparator's 1 V logic supply", "SCMP": "the comparator (a switch with hysteresis)",
+       "RQ": "the comparator's output load", r"B(ST|CD|DC|TI)": "the IC's switched current sources",
+       r"VG(CD|DC)": "the back-EMF zero crossings (the IC's EMF comparators, not modelled)",
+       "VEMF": "the EMF's recovery, as a step"}
+
+
 @pytest.mark.parametrize("build", BUILDERS, ids=lambda b: b.__name__)
-def test_parts_drawn_are_the_parts_simulated(build):
-    assert_drawn_as_netlisted(build())
+def test_drawing_netlist_and_parts_are_one_set_with_one_set_of_values(build):
+    assert_same_parts(build(), AUX)
+
+
+def test_a_part_drawn_but_not_simulated_is_caught():
+    import dataclasses
+
+    c = timers.start_oscillator()
+    moved = dataclasses.replace(c, netlist=c.netlist.replace("C5 st 0 2.2e-07", "C5 st 0 2.7e-07"))
+    with pytest.raises(AssertionError, match="C5"):
+        assert_same_parts(moved, AUX)
+    unnamed = dataclasses.replace(c, netlist=c.netlist.replace("RQ q 0 1e6", "RQ q 0 1e6\nCX st 0 1n"))
+    with pytest.raises(AssertionError, match="CX is neither a part"):
+        assert_same_parts(unnamed, AUX)
+
+
+def test_start_frequency_is_the_datasheets_rule_not_the_charge_balance(ngspice):
+    """The TDA5144 datasheet's example (500 ms for 0.25 uF: 2 s per uF) predicts 1 / (2 s/uF x 0.22 uF) =
+    2.2727 Hz for C5; the simulated oscillator runs at that, where the note's eq 1 (2.15 s/uF) gives 2.114 Hz."""
+    rows = {r["id"]: r for r in evaluate(timers.start_oscillator())}
+    assert rows["start-frequency"]["kind"] == "independent" and rows["start-period"]["kind"] == "sanity"
+    assert rows["start-frequency"]["spice"] == pytest.approx(1 / (2.0 * 0.22), rel=5e-3)
+    assert rows["start-frequency"]["spice"] > 1 / (2.15 * 0.22) * 1.05  # eq 1's 0.05 V level is not the IC's
 
 
 @pytest.mark.parametrize("build", BUILDERS, ids=lambda b: b.__name__)
@@ -36,15 +64,33 @@ def test_commutation_design_confirmed_at_its_corners(ngspice):
     spice = timers.design_check(result)
     assert spice["swing_rpm_min"] == pytest.approx(result.swing_at_rpm_min, rel=0.01)
     assert spice["swing_rpm_max"] == pytest.approx(result.swing_at_rpm_max, rel=0.01)
+    # by hand: 11 uA for t_com at rpm_min into C3 - 5 %, and 5.3 uA at rpm_max into C3 + 5 %
+    s, c = result.spec, result.cap_cd
+    t_min, t_max = (10 / (s[f"rpm_{k}"] * s["pole_pairs"]) for k in ("min", "max"))  # eq 4: t_com = 10 / (rpm n)
+    assert spice["swing_rpm_min"] == pytest.approx(s["i_charge_max"] * t_min / (c * (1 - s["tolerance"])), rel=0.01)
+    assert spice["swing_rpm_max"] == pytest.approx(s["i_charge_min"] * t_max / (c * (1 + s["tolerance"])), rel=0.01)
+
+
+def test_the_design_check_finds_its_own_worst_corner(ngspice):
+    """design_check simulates every corner: a design whose own corner search were wrong (a swing_at_rpm_min
+    from the smallest current) would not be confirmed, because SPICE reports the largest swing it sees."""
+    result = commutation.design({})
+    s, c = result.spec, result.cap_cd
+    t_min = 10 / (s["rpm_min"] * s["pole_pairs"])
+    wrong = s["i_charge_min"] * t_min / (c * (1 + s["tolerance"]))  # the mildest corner, not the worst
+    assert timers.design_check(result)["swing_rpm_min"] > wrong * 1.5
 
 
 def test_a_swing_beyond_the_window_is_clipped_at_the_high_level(ngspice):
-    # 4.7 nF at the note's 1800 rpm with 11 uA would swing 2.2 V: the source stops at the 2.3 V level
+    # 4.7 nF at the note's 1800 rpm with 11 uA would swing 2.2 V: each corner's source stops at its own high
+    # level, so the largest swing SPICE sees is the widest window, 2.55 V - 0.80 V, and the window was reached
     result = commutation.design({})
+    assert not timers.design_check(result)["window_reached"]
     small = type(result)(**{**result.__dict__, "cap_cd": 4.7e-9})
     spice = timers.design_check(small)
-    window = result.spec["v_high_min"] - result.spec["v_low_max"]
-    assert spice["swing_rpm_min"] == pytest.approx(window, abs=0.01)
+    widest = result.spec["v_high_max"] - result.spec["v_low_min"]
+    assert widest == pytest.approx(2.55 - 0.80)
+    assert spice["swing_rpm_min"] == pytest.approx(widest, abs=0.01) and spice["window_reached"]
 
 
 def test_figure_4_waveforms(ngspice):

@@ -5,6 +5,17 @@ A circuit module builds a :class:`Circuit` from its parameters; the netlist and 
 drawn from the same ``parts`` (a test checks that they name the same set with the same values). Each
 :class:`Check` names a `.meas` result of the netlist, the value the book's equation gives, and the
 tolerance the chapter states and justifies (what the equation leaves out that the simulation keeps).
+
+A check is one of two kinds, and the book says which:
+
+* ``"independent"``: the simulator computes the quantity from the circuit by a route the equation does not
+  take (a measured frequency against a printed rule, a transistor's exponential against a datasheet figure
+  moved along the diode law, a loop solved by ngspice against the hand analysis of that loop). It could
+  disagree, and its verdict is "agrees" or "differs".
+* ``"sanity"``: the netlist is built from the same formula or the same numbers as the equation (a part
+  value computed from the target it is then measured against, a constant current integrated between the
+  very levels the equation uses). It cannot disagree unless the deck is miswired or the solver's step is
+  too coarse; its verdict is "consistent (by construction)", never "agrees".
 """
 from __future__ import annotations
 
@@ -20,6 +31,18 @@ class Part:
     note: str = ""
 
 
+#: the kinds of check, and the verdict the book prints for each when the values are within the tolerance
+KINDS = {"independent": "agrees", "sanity": "consistent (by construction)"}
+
+
+def verdict(row: dict) -> str:
+    """What the book says of one row: "agrees" only for an independent check; a sanity check that holds is
+    "consistent (by construction)"; either outside its tolerance "differs"."""
+    if not row["agrees"]:
+        return "differs"
+    return KINDS[row.get("kind", "independent")]
+
+
 @dataclass(frozen=True)
 class Check:
     id: str  # "limiter-opamp-trip-high"
@@ -29,6 +52,11 @@ class Check:
     measure: str  # the .meas name in the netlist
     rtol: float  # agreement the chapter states
     why: str  # why that tolerance: what the equation leaves out
+    kind: str = "independent"  # or "sanity": agrees by construction (see the module text)
+
+    def __post_init__(self):
+        if self.kind not in KINDS:
+            raise ValueError(f"check {self.id}: kind {self.kind!r} is not one of {', '.join(KINDS)}")
 
 
 @dataclass(frozen=True)
@@ -55,7 +83,7 @@ def with_defaults(defaults: dict, p: dict | None) -> dict:
 
 def evaluate(circuit: Circuit, run=None) -> list[dict]:
     """Run the netlist once and compare every check: rows (id, circuit, quantity, unit, equation, spice,
-    rel_diff, agrees, rtol, why)."""
+    rel_diff, agrees, rtol, why, kind, verdict)."""
     from .runner import run as run_spice
 
     measured = (run or run_spice)(circuit.netlist)
@@ -65,5 +93,6 @@ def evaluate(circuit: Circuit, run=None) -> list[dict]:
         rel = abs(value - equation) / abs(equation) if equation else abs(value)
         rows.append({"id": c.id, "circuit": circuit.id, "quantity": c.quantity, "unit": c.unit,
                      "equation": equation, "spice": value, "rel_diff": rel, "agrees": bool(rel <= c.rtol),
-                     "rtol": c.rtol, "why": c.why})
+                     "rtol": c.rtol, "why": c.why, "kind": c.kind})
+        rows[-1]["verdict"] = verdict(rows[-1])
     return rows

@@ -69,14 +69,18 @@ def _pulse(p: dict, v1: float, first: float, second: float) -> str:
     return f"PULSE({v1:.6g} {-v1:.6g} {period / 4:.6g} {first:.6g} {second:.6g} {width:.6g} {period:.6g})"
 
 
+#: where each part sits (the SPICE netlist and lcapy's netlist both read this): the two half-bridges drive o1
+#: and o2, the load is outp-outn
+NODES = {"VO1": "o1 0", "VO2": "o2 0", "L1": "o1 outp", "L2": "o2 outn", "C_BYP": "outp outn", "R_L": "outp outn"}
+
+
 def element_lines(p: dict, ps: tuple[Part, ...]) -> list[str]:
-    """One line per part, in the parts' order: the two half-bridges drive o1 and o2, the load is outp-outn."""
+    """One line per part, in the parts' order, placed by :data:`NODES`."""
     v = {q.ref: q.value for q in ps}
-    return [f"VO1 o1 0 {_pulse(p, -v['VO1'], p['t_rise'], p['t_fall'])} AC 0.5",
-            f"VO2 o2 0 {_pulse(p, v['VO2'], p['t_fall'], p['t_rise'])} AC 0.5 180",
-            f"L1 o1 outp {v['L1']:.6g}", f"L2 o2 outn {v['L2']:.6g}",
-            f"C_BYP outp outn {v['C_BYP']:.6g}", f"R_L outp outn {v['R_L']:.6g}",
-            "Eprobe out 0 outp outn 1"]  # the load voltage as one node (a probe, not a part)
+    value = {"VO1": f"{_pulse(p, -v['VO1'], p['t_rise'], p['t_fall'])} AC 0.5",
+             "VO2": f"{_pulse(p, v['VO2'], p['t_fall'], p['t_rise'])} AC 0.5 180"}
+    return [f"{q.ref} {NODES[q.ref]} {value.get(q.ref, f'{q.value:.6g}')}" for q in ps] + [
+        "Eprobe out 0 outp outn 1"]  # the load voltage as one node (a probe, not a part)
 
 
 def _ac_lines(p: dict) -> list[str]:

@@ -30,6 +30,12 @@ CD_LOW = (0.80, 0.875, 0.90)
 CD_HIGH = (2.3, 2.4, 2.55)
 CLAMP = 2e-3  # V: width of the soft stop of a source at a level (assumption, see the module text)
 BOARD = {ref: value for ref, _, value, *_ in PARTS}
+#: the TDA5144 datasheet's own start example, "t = 500 ms, thus C = 0.5/2 = 0.25 uF": a start period of 2 s
+#: per uF of CAP-ST (datasheet_facts.md). A printed rule, not this module's charge balance.
+START_RULE = 2.0 / 1e-6  # s per F
+#: what a check between the equation's own levels can and cannot show (the timers' sanity checks)
+SANITY = ("by construction: the deck integrates the same constant current between the same levels the equation "
+          "uses, so it checks the deck's switching logic and the solver's step, not the equation")
 
 
 def element_lines(parts, nodes: dict[str, str]) -> list[str]:
@@ -86,12 +92,20 @@ def start_oscillator(p: dict | None = None) -> Circuit:
              "BST 0 st I = i_st*(1-2*v(q))", f".ic v(st)={q['v_low']:.6g}",
              f".tran {period / 2000:.6g} {3.6 * period:.6g} 0 {period / 2000:.6g} uic",
              *_meas(f"t1 WHEN v(st)={mid:.6g} RISE=2", f"t2 WHEN v(st)={mid:.6g} RISE=3", "period PARAM='t2-t1'",
-                    f"tdown WHEN v(st)={mid:.6g} FALL=2", "rise_time PARAM='tdown-t1'")]
+                    f"tdown WHEN v(st)={mid:.6g} FALL=2", "rise_time PARAM='tdown-t1'", "freq PARAM='1/(t2-t1)'")]
     why = ("the model switches at a time step after the level is crossed (step = period / 2000); the equation "
            "switches exactly at the level")
-    checks = (Check("start-period", "start period (TDA5144 levels)", "s", period, "period", 0.005, why),
+    checks = (Check("start-period", "start period (TDA5144 levels)", "s", period, "period", 0.005,
+                    f"{SANITY}; {why}", kind="sanity"),
               Check("start-ramp-up", "time from mid-window up and back to mid-window (half a period)", "s",
-                    period / 2, "rise_time", 0.005, why + "; charge and discharge at the same current"))
+                    period / 2, "rise_time", 0.005, f"{SANITY}; {why}; charge and discharge at the same current",
+                    kind="sanity"),
+              Check("start-frequency", "start oscillator's frequency against the TDA5144 datasheet's rule "
+                    "t = 2 s/uF x CAP-ST", "Hz", 1 / (START_RULE * q["cap_st"]), "freq", 0.005,
+                    "the datasheet's printed rule (its example: 500 ms, C = 0.5/2 = 0.25 uF), not the charge balance "
+                    "the deck runs; it holds for the typical 2 uA and the 0.20 V / 2.20 V levels (a part at its "
+                    "1.5 or 2.5 uA moves both by 25 %). The note's eq 1, 2.15 s/uF, is for 0.05 V to 2.2 V and would "
+                    f"be 7.5 % slow here. Left: {why}: ±0.5 %"))
     return Circuit("cap-st", "CAP-ST start oscillator", "AN94002 2.1.1; TDA5144 datasheet", parts,
                    "\n".join(lines) + "\n", checks, draw=lambda: draw_timer(parts, "CAP-ST"))
 
@@ -130,6 +144,10 @@ def timer_source(name: str, node: str, gate: str, i_ch: str, i_dis: str, v_low: 
             f" - {i_dis}*(1-v({gate}))*{_soft(f'v({node})-{v_low}')}")
 
 
+#: where CAP-CD's and CAP-DC's capacitors sit (the SPICE netlist and lcapy's netlist both read this)
+CD_NODES = {"C3": "C3 cd 0", "C4": "C4 dc 0"}
+
+
 def _cd_netlist(q: dict, parts, extra: tuple = ()) -> tuple[str, dict]:
     n = q["pole_pairs"]
     tc = {"min": note.t_com(q["rpm_min"], n), "max": note.t_com(q["rpm_max"], n)}
@@ -140,7 +158,7 @@ def _cd_netlist(q: dict, parts, extra: tuple = ()) -> tuple[str, dict]:
     at = {"min": 2 * tc["min"], "max": zc[k] + 2 * tc["max"]}  # start of the second cycle of each speed
     v_hit = f"{q['v_low'] + CLAMP:.6g}"
     lines = ["* CAP-CD / CAP-DC adaptive commutation delay (TDA5144, AN94002 2.1.2, figure 4)",
-             *element_lines(parts, {"C3": "C3 cd 0", "C4": "C4 dc 0"}),
+             *element_lines(parts, CD_NODES),
              "* zero crossings of the back-EMF (the IC's EMF comparators, not modelled): gate high = charge",
              f"VGCD gcd 0 {_pwl(zc, levels, rise)}", f"VGDC gdc 0 {_pwl(zc, [1 - v for v in levels], rise)}",
              timer_source("CD", "cd", "gcd", "i_ch", "i_dis", "v_low", "v_high"),
@@ -170,20 +188,20 @@ def commutation_delay(p: dict | None = None) -> Circuit:
     netlist, _ = _cd_netlist(q, parts)
     n = q["pole_pairs"]
     ratio = q["i_ch"] / q["i_dis"]
-    swing_why = ("charge balance is exact; the gate's edges take t_com / 1000 and the model's time step is "
-                 "t_com / 400 at rpm_max")
-    delay_why = ("the equation's half interval holds for a sink of exactly twice the charge current (8.1 and "
-                 "16.2 uA typ); the simulation times the fall to 2 mV above the low level, where its clamp begins")
+    swing_why = (f"{SANITY}; the gate's edges take t_com / 1000 and the model's time step is t_com / 400 at "
+                 "rpm_max")
+    delay_why = (f"{SANITY} (charge at I_CH for t_com, sink at I_DIS back down: t_com I_CH / I_DIS); the simulation "
+                 "times the fall to 2 mV above the low level, where its clamp begins")
     checks = tuple(
         Check(f"cd-swing-{s}", f"CAP-CD swing at {q[f'rpm_{s}']:g} rpm", "V",
-              note.excursion(q["cap_cd"], q[f"rpm_{s}"], n, q["i_ch"]), f"swing_{s}", 0.01, swing_why)
+              note.excursion(q["cap_cd"], q[f"rpm_{s}"], n, q["i_ch"]), f"swing_{s}", 0.01, swing_why, kind="sanity")
         for s in ("min", "max")) + (
         Check("dc-swing-min", f"CAP-DC swing at {q['rpm_min']:g} rpm", "V",
-              note.excursion(q["cap_dc"], q["rpm_min"], n, q["i_ch"]), "dcswing_min", 0.01, swing_why),
+              note.excursion(q["cap_dc"], q["rpm_min"], n, q["i_ch"]), "dcswing_min", 0.01, swing_why, kind="sanity"),
         Check("cd-delay-min", f"commutation delay after the zero crossing at {q['rpm_min']:g} rpm", "s",
-              note.t_com(q["rpm_min"], n) * ratio, "delay_min", 0.01, delay_why),
+              note.t_com(q["rpm_min"], n) * ratio, "delay_min", 0.01, delay_why, kind="sanity"),
         Check("cd-delay-max", f"commutation delay after the zero crossing at {q['rpm_max']:g} rpm", "s",
-              note.t_com(q["rpm_max"], n) * ratio, "delay_max", 0.01, delay_why))
+              note.t_com(q["rpm_max"], n) * ratio, "delay_max", 0.01, delay_why, kind="sanity"))
     return Circuit("cap-cd", "CAP-CD / CAP-DC adaptive commutation delay", "AN94002 2.1.2, figure 4; TDA5144 datasheet",
                    parts, netlist, checks, draw=lambda: draw_timer(parts, "CAP-CD / CAP-DC"))
 
@@ -204,25 +222,40 @@ def commutation_waveforms(p: dict | None = None, points: int = 400) -> dict:
 
 
 def design_check(result) -> dict:
-    """A commutation design at its two worst corners: CAP-CD at rpm_min with the largest charge current and
-    the smallest capacitor, at rpm_max with the smallest current and the largest capacitor (each sinking
-    twice its charge current, stopping at the narrowest window's levels). {"swing_rpm_min", "swing_rpm_max"}."""
+    """A commutation design simulated at every tolerance corner, not at the corner the design picked: CAP-CD
+    at rpm_min for each capacitor end (+- tolerance), charge current (min, max) and pair of levels (low min /
+    max, high min / max), 16 timers, and at rpm_max for each capacitor end and current, 4 timers; each sinks
+    twice its charge current and stops at its own levels. One run; the simulation's own worst swings:
+    {"swing_rpm_min": the largest at rpm_min, "swing_rpm_max": the smallest at rpm_max, "window_reached":
+    whether any rpm_min corner's swing reached that corner's own window (its source stopped at the high
+    level: the design does not fit)}. A design whose corner search missed a corner shows here as a larger
+    swing than its swing_at_rpm_min; a swing beyond a corner's window is cut at that window."""
+    import itertools
+
     s, c = result.spec, result.cap_cd
-    corners = {"min": (s["i_charge_max"], c * (1 - s["tolerance"])), "max": (s["i_charge_min"], c * (1 + s["tolerance"]))}
-    lines = ["* commutation design at its worst corners", f".param v_low={s['v_low_max']:.6g} v_high={s['v_high_min']:.6g}"]
-    end = 0.0
-    for name, (i_ch, cap) in corners.items():
-        tc = note.t_com(s[f"rpm_{name}"], s["pole_pairs"])
+    caps = (c * (1 - s["tolerance"]), c * (1 + s["tolerance"]))
+    currents = (s["i_charge_min"], s["i_charge_max"])
+    levels = list(itertools.product((s["v_low_min"], s["v_low_max"]), (s["v_high_min"], s["v_high_max"])))
+    corners = [("min", k, cap, i, lv) for k, (cap, i, lv) in enumerate(itertools.product(caps, currents, levels))]
+    corners += [("max", k, cap, i, (s["v_low_max"], s["v_high_min"]))
+                for k, (cap, i) in enumerate(itertools.product(caps, currents))]
+    lines, end = ["* commutation design at every corner"], 0.0
+    tcs = {name: note.t_com(s[f"rpm_{name}"], s["pole_pairs"]) for name in ("min", "max")}
+    for speed, k, cap, i_ch, (v_lo, v_hi) in corners:
+        tc, tag = tcs[speed], f"{speed}{k}"
         zc = zero_crossings([(tc, 4)])
         end = max(end, zc[-1])
-        lines += [f"C{name} n{name} 0 {cap:.6g}", f"VG{name} g{name} 0 {_pwl(zc, [1, 0, 1, 0], tc / 1000)}",
-                  timer_source(name, f"n{name}", f"g{name}", f"{i_ch:.6g}", f"{2 * i_ch:.6g}", "v_low", "v_high"),
-                  f".ic v(n{name})={s['v_low_max']:.6g}",
-                  *_meas(f"hi_{name} MAX v(n{name}) FROM={2 * tc:.9g} TO={4 * tc:.9g}",
-                         f"lo_{name} MIN v(n{name}) FROM={2 * tc:.9g} TO={4 * tc:.9g}", f"sw_{name} PARAM='hi_{name}-lo_{name}'")]
-    step = min(note.t_com(s[f"rpm_{k}"], s["pole_pairs"]) for k in corners) / 400
+        lines += [f"C{tag} n{tag} 0 {cap:.6g}", f"VG{tag} g{tag} 0 {_pwl(zc, [1, 0, 1, 0], tc / 1000)}",
+                  timer_source(tag, f"n{tag}", f"g{tag}", f"{i_ch:.6g}", f"{2 * i_ch:.6g}", f"{v_lo:.6g}", f"{v_hi:.6g}"),
+                  f".ic v(n{tag})={v_lo:.6g}",
+                  *_meas(f"hi_{tag} MAX v(n{tag}) FROM={2 * tc:.9g} TO={4 * tc:.9g}",
+                         f"lo_{tag} MIN v(n{tag}) FROM={2 * tc:.9g} TO={4 * tc:.9g}")]
+    step = min(tcs.values()) / 400
     out = run("\n".join([*lines, f".tran {step:.6g} {end:.9g} 0 {step:.6g} uic"]) + "\n")
-    return {"swing_rpm_min": out["sw_min"], "swing_rpm_max": out["sw_max"]}
+    swings = {(sp, k): out[f"hi_{sp}{k}"] - out[f"lo_{sp}{k}"] for sp, k, *_ in corners}
+    reached = any(swings["min", k] >= (v_hi - v_lo) - 2 * CLAMP for sp, k, _, _, (v_lo, v_hi) in corners if sp == "min")
+    return {"swing_rpm_min": max(w for (sp, _), w in swings.items() if sp == "min"),
+            "swing_rpm_max": min(w for (sp, _), w in swings.items() if sp == "max"), "window_reached": reached}
 
 
 # ----------------------------------------------------------------------------------------------
@@ -262,16 +295,18 @@ def watchdog(p: dict | None = None) -> Circuit:
                     "t_wd PARAM='t_top-t_low'", "t_end WHEN v(q)=0.5 FALL=1",
                     f"t_rec WHEN v(ti)={q['v_ti_start'] + CLAMP:.6g} FALL=1 FROM={t_s[3] * 1.01:.9g}",
                     "rec_cycle PARAM='t_rec-t_end'")]
-    step = ("the comparator and the 57 uA / 5 uA change act within one time step (fast step / 40); the equation "
-            "switches exactly at the level")
+    step = (f"{SANITY}; the comparator and the 57 uA / 5 uA change act within one time step (fast step / 40), "
+            "the equation switches exactly at the level")
     checks = (
         Check("wd-fast", "internal timing step, 0.2 V to 0.3 V", "s", t_s[1], "t_low", 0.005,
-              step + "; .meas interpolates within the step, so what is left is a fraction of it (0.1 % seen)"),
+              step + "; .meas interpolates within the step, so what is left is a fraction of it (0.1 % seen)",
+              kind="sanity"),
         Check("wd-time", "watchdog time, 0.3 V to 2.2 V at 5 uA", "s", note.watchdog_time(q["cap_ti"], q["i_wd"],
-              q["v_ti_low"], q["v_ti_high"]), "t_wd", 0.005, step),
-        Check("wd-stalled-cycle", "stalled cycle: up to 2.2 V and back to 0.2 V", "s", t_s[3], "t_end", 0.005, step),
+              q["v_ti_low"], q["v_ti_high"]), "t_wd", 0.005, step, kind="sanity"),
+        Check("wd-stalled-cycle", "stalled cycle: up to 2.2 V and back to 0.2 V", "s", t_s[3], "t_end", 0.005, step,
+              kind="sanity"),
         Check("wd-recovered-cycle", "cycle with the EMF recovering half-way up the ramp", "s", t_r[3], "rec_cycle",
-              0.01, step + "; its discharge ends 2 mV above 0.2 V, where the clamp begins"))
+              0.01, step + "; its discharge ends 2 mV above 0.2 V, where the clamp begins", kind="sanity"))
     return Circuit("cap-ti", "CAP-TI watchdog", "AN94002 2.1.3, figure 5; TDA5144 datasheet", parts,
                    "\n".join(lines) + "\n", checks, draw=lambda: draw_timer(parts, "CAP-TI"))
 
@@ -332,4 +367,4 @@ def chapter_table(circuit):
     return table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
                  [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
                    f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"{r['rtol']:.1%}",
-                   "agrees" if r["agrees"] else "**differs**"] for r in rows])
+                   r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
