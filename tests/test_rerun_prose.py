@@ -29,7 +29,7 @@ RERUNS = {
     "an94002/one_transistor_limiter": {"i_limit": 0.5, "v_be": 0.7},
     "an94002/opamp_limiter": {"resistor_tolerance": 0.001, "v_cs": 0.2},
     "an94002/parts_list": {"i_limit": 0.5, "v_cs": 0.2},
-    "an94002/speed_control": {"v_supply": 24.0, "r3": 100e3},
+    "an94002/speed_control": {"v_supply": 13.5, "r3": 47e3},
     "an94002/start_oscillator": {"inertia": 150e-6, "pole_pairs": 4, "start_current": 0.8, "f_start": 3.0},
     "an94002/watchdog": {"t_wd_target": 6e-3, "cap_ti": 22e-9},
     "design/cap_cd": {"pole_pairs": 4, "rpm_min": 1000.0, "rpm_max": 4000.0},

@@ -159,12 +159,12 @@ def cmd_spice(args) -> int:
     except (spice.SpiceUnavailable, spice.SpiceError) as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 4
-    keys = ("id", "circuit", "quantity", "unit", "equation", "spice", "rel_diff", "agrees")
+    keys = ("id", "circuit", "quantity", "unit", "equation", "spice", "rel_diff", "agrees", "kind", "verdict")
     for r in rows:
         if "error" in r:
             print(f"error: {r['error']}", file=sys.stderr)
     if args.json:
-        print(json.dumps([{k: (None if isinstance(r[k], float) and r[k] != r[k] else r[k]) for k in keys}
+        print(json.dumps([{k: (None if isinstance(r.get(k), float) and r[k] != r[k] else r.get(k)) for k in keys}
                           | ({"error": r["error"]} if "error" in r else {}) for r in rows], indent=1))
     else:
         from .report.tables import eng
@@ -173,7 +173,8 @@ def cmd_spice(args) -> int:
         print(fit_table([[r["id"], eng(r["equation"], unit[r["unit"]]) if "error" not in r else "—",
                           eng(r["spice"], unit[r["unit"]]) if "error" not in r else "—",
                           f"{r['rel_diff']:.2%}" if "error" not in r else "—",
-                          r.get("error") or ("agrees: " if r["agrees"] else "DIFFERS: ") + r["quantity"]] for r in rows],
+                          r.get("error") or (r["verdict"] if r["agrees"] else "DIFFERS") + ": " + r["quantity"]]
+                         for r in rows],
                         ["id", "equation", "SPICE", "difference", "verdict: quantity"], [30, 12, 12, 10]))
     return 0 if all(r["agrees"] for r in rows) else 1
 

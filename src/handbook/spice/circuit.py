@@ -96,3 +96,28 @@ def evaluate(circuit: Circuit, run=None) -> list[dict]:
                      "rtol": c.rtol, "why": c.why, "kind": c.kind})
         rows[-1]["verdict"] = verdict(rows[-1])
     return rows
+
+
+def chapter_table(*circuits):
+    """The chapters' "equation vs SPICE" table of one or more circuits (quantity, equation, SPICE, difference,
+    tolerance, verdict) with each tolerance's reason below it, as Markdown; or a line saying the SPICE
+    check was skipped and why when ngspice is missing."""
+    from IPython.display import Markdown
+
+    from ..report.tables import eng, table
+    from .runner import SpiceError, SpiceUnavailable
+
+    try:
+        rows = [r for c in circuits for r in evaluate(c)]
+    except SpiceUnavailable as exc:
+        return Markdown(f"**SPICE check skipped:** {exc}.")
+    except SpiceError as exc:  # a netlist ngspice refused: said on the page, not a traceback
+        return Markdown(f"**SPICE run failed:** {exc}.")
+    body = table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
+                 [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
+                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"±{r['rtol']:.1%}",
+                   r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
+    why = "\n".join(f"- *{r['quantity']}*, ±{r['rtol']:.1%}"
+                    + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity" else "")
+                    + f": {r['why']}." for r in rows)
+    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)

@@ -20,7 +20,7 @@ from ..core import series
 from ..sources import an93008, an94002
 from ..sources.an94002.parts import PARTS
 from . import models
-from .circuit import Check, Circuit, Part
+from .circuit import Check, Circuit, Part, chapter_table  # noqa: F401 (the chapters' table)
 from .runner import run
 
 RAMP = 1.0  # s: the motor current's ramp (slow against the LM358's 7 Hz pole, see the checks' tolerances)
@@ -410,29 +410,3 @@ def design_check(result) -> dict:
     return {"i_trip_min": out["i_trip"], "i_trip_max": out["i_trip_1"], "i_trip_min_equation": lo["i_eq"],
             "i_trip_max_equation": hi["i_eq"], "headroom_min": min(out["head_p_2"], out["head_m_2"]),
             "headroom_min_equation": head["head_eq"], "ok": bool(high)}
-
-
-def chapter_table(*circuits):
-    """The chapters' "equation vs SPICE" table of one or more circuits (quantity, equation, SPICE, difference,
-    tolerance, verdict) with each tolerance's reason below it, as Markdown; or a line saying the SPICE
-    check was skipped and why when ngspice is missing."""
-    from IPython.display import Markdown
-
-    from ..report.tables import eng, table
-    from .circuit import evaluate
-    from .runner import SpiceError, SpiceUnavailable
-
-    try:
-        rows = [r for c in circuits for r in evaluate(c)]
-    except SpiceUnavailable as exc:
-        return Markdown(f"**SPICE check skipped:** {exc}.")
-    except SpiceError as exc:  # a netlist ngspice refused: said on the page, not a traceback
-        return Markdown(f"**SPICE run failed:** {exc}.")
-    body = table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
-                 [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
-                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"±{r['rtol']:.1%}",
-                   r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
-    why = "\n".join(f"- *{r['quantity']}*, ±{r['rtol']:.1%}"
-                    + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity" else "")
-                    + f": {r['why']}." for r in rows)
-    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)

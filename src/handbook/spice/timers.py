@@ -19,7 +19,7 @@ from __future__ import annotations
 from ..report.tables import eng
 from ..sources import an94002 as note
 from ..sources.an94002.parts import PARTS
-from .circuit import Check, Circuit, Part, with_defaults
+from .circuit import Check, Circuit, Part, chapter_table, with_defaults  # noqa: F401 (the chapters' table)
 from .runner import run
 
 TDA5144 = "TDA5144 datasheet (June 1994), via datasheet_facts.md"
@@ -345,26 +345,3 @@ def draw_timer(parts, pin: str):
                                                                 loc="right", fontsize=9))
     return d
 
-
-# ----------------------------------------------------------------------------------------------
-# the chapters' "equation vs SPICE" table
-
-def chapter_table(circuit):
-    """The chapter's table (quantity, equation, SPICE, difference, tolerance, verdict) as Markdown, or a line
-    saying the SPICE check was skipped and why when ngspice is missing."""
-    from IPython.display import Markdown
-
-    from ..report.tables import table
-    from .circuit import evaluate
-    from .runner import SpiceError, SpiceUnavailable
-
-    try:
-        rows = evaluate(circuit)
-    except SpiceUnavailable as exc:
-        return Markdown(f"**SPICE check skipped:** {exc}.")
-    except SpiceError as exc:  # a netlist ngspice refused: said on the page, not a traceback
-        return Markdown(f"**SPICE run failed:** {exc}.")
-    return table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
-                 [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
-                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"{r['rtol']:.1%}",
-                   r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
