@@ -1,14 +1,259 @@
-"""Re-running a chapter with another motor's data, the way a reader does (papermill)."""
+"""Re-running chapters with other data, the way a reader does (papermill): the numbers, and prose that follows
+the parameters (every chapter with a ``parameters`` cell).
+
+A chapter's sentences are rendered the way myst-nb renders them (each ``{glue:...}`` role replaced by the
+value glued in that run). For every glued value that changes when the inputs change, the value the note's
+inputs give must not also stand in the chapter's *static* prose: a sentence that types a result instead of
+gluing it would still state the note's result in the reader's re-run. Sentences true only for the note's
+inputs are glued with ``report.note_only`` and must disappear in a re-run; the phrases below that only the
+note's board makes true must not appear in any re-run's rendered page (prose and tables alike).
+"""
+from __future__ import annotations
+
 import json
+import re
 from pathlib import Path
 
 import papermill as pm
 import pytest
 
 BOOK = Path(__file__).resolve().parents[1] / "book"
+FAN = "[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n" \
+      "[current_limiter]\ni_no_trip = 0.3\ni_must_trip = 0.7\n"
 
+# chapter -> inputs unlike the note's (every chapter with a parameters cell; the worked examples are
+# "Design your own" run on a spec, covered by its entry)
+RERUNS = {
+    "an93008/current_limiter": {"v_supply": 24.0, "r8": 15e3, "v_cs": 0.2},
+    "an94002/commutation_delay": {"pole_pairs": 4, "rpm_min": 900.0},
+    "an94002/grounding_decoupling": {"z_max": 1.0, "f_decoupling": 1e6, "c2": 4.7e-6, "esr": 0.3},
+    "an94002/one_transistor_limiter": {"i_limit": 0.5, "v_be": 0.7},
+    "an94002/opamp_limiter": {"resistor_tolerance": 0.001, "v_cs": 0.2},
+    "an94002/parts_list": {"i_limit": 0.5, "v_cs": 0.2},
+    "an94002/speed_control": {"v_supply": 13.5, "r3": 47e3},
+    "an94002/start_oscillator": {"inertia": 150e-6, "pole_pairs": 4, "start_current": 0.8, "f_start": 3.0},
+    "an94002/watchdog": {"t_wd_target": 6e-3, "cap_ti": 22e-9},
+    "design/cap_cd": {"pole_pairs": 4, "rpm_min": 1000.0, "rpm_max": 4000.0},
+    "design/class_d": {"p_out": 60.0, "r_load": 8.0},
+    "design/converter": {"v_supply_min": 10.0, "i_out": 0.08, "f_min": 25e3},
+    "design/current_limiter": {"i_no_trip": 0.5, "i_must_trip": 1.2},
+    "design/your_own": {"spec_file": "fan.toml"},
+    "lm4651/equations": {"p_out": 60.0, "r_load": 8.0, "f_sw": 150e3},
+    "tca5600/converter": {"v_cc2_min": 10.0, "i_out2": 0.08},
+    "tda5341/commutation": {"inertia": 1e-6, "pole_pairs": 4, "start_current": 0.3},
+}
+
+# sentences that state a value equal to an input's note value on purpose: the value is fixed there, whatever
+# the parameters cell holds (chapter -> (token, a phrase of the sentence, why))
+FIXED = {
+    "lm4651/equations": [("4 Ω", "SPICE puts the corner", "the simulation runs both loads, 4 and 8 ohm, always"),
+                         ("4 Ω", "The residue at the load is", "the 4 ohm run of the two"),
+                         ("4 Ω", "Two runs per load", "the two loads simulated")],
+}
+
+# phrases only the note's inputs make true: they may stand in the committed chapter, never in a re-run
+NOTE_ONLY = {
+    "an94002/commutation_delay": ["is the note's choice", "note's currents, note's capacitor",
+                                  "The board's 18 nF"],
+}
+
+ROLE = re.compile(r"\{glue(?::(text|md))?\}`([^`:]+)(?::([^`]*))?`")
+_runs: dict[str, Path] = {}
+
+
+def rerun(chapter: str, tmp_path_factory) -> Path:
+    """The chapter executed with RERUNS[chapter] (once per test session)."""
+    if chapter not in _runs:
+        tmp = tmp_path_factory.mktemp(chapter.replace("/", "_"))
+        params = dict(RERUNS[chapter])
+        if params.get("spec_file") == "fan.toml":
+            (tmp / "fan.toml").write_text(FAN)
+            params["spec_file"] = str(tmp / "fan.toml")
+        out = tmp / "out.ipynb"
+        pm.execute_notebook(str(BOOK / f"{chapter}.ipynb"), str(out), parameters=params, kernel_name="python3",
+                            cwd=str((BOOK / chapter).parent), progress_bar=False)
+        _runs[chapter] = out
+    return _runs[chapter]
+
+
+def glued(nb: dict) -> dict:
+    """name -> glued value: a float, a text, or ('md', markdown) for a glued Markdown sentence."""
+    out = {}
+    for cell in nb["cells"]:
+        for o in cell.get("outputs", []):
+            name = o.get("metadata", {}).get("scrapbook", {}).get("name")
+            if not name:
+                continue
+            data = o.get("data", {})
+            md = data.get("application/papermill.record/text/markdown", data.get("text/markdown"))
+            if md is not None:
+                out[name] = ("md", "".join(md))
+                continue
+            text = "".join(data.get("application/papermill.record/text/plain", data.get("text/plain", "")))
+            try:
+                out[name] = float(text)
+            except ValueError:
+                out[name] = text.strip("'\"")
+    return out
+
+
+def _show(value, fmt: str | None) -> str:
+    if isinstance(value, tuple):
+        return value[1]
+    if fmt and isinstance(value, float):
+        return format(value, fmt)
+    return str(value)
+
+
+UNITS = ("pF", "nF", "µF", "uF", "mF", "F", "mΩ", "Ω", "kΩ", "MΩ", "k", "µA", "uA", "mA", "A", "mV", "V", "µs", "us",
+         "ms", "s", "Hz", "kHz", "MHz", "rpm", "W", "mW", "K/W", "°C", "K", "%", "nH", "µH", "uH", "mH", "dB", "mm")
+_AFTER = re.compile(r"[ \u00a0]*([^\s,;:)*|]+)")
+
+
+def render(nb: dict) -> tuple[list[str], list[str], dict]:
+    """(rendered markdown cells, their static text with every glue role removed, role -> rendered value with the
+    unit the prose writes after it, when it writes one)."""
+    values, shown, static, roles = glued(nb), [], [], {}
+    for cell in nb["cells"]:
+        if cell["cell_type"] != "markdown":
+            continue
+        src = "".join(cell["source"])
+
+        def sub(m):
+            key = (m.group(2), m.group(3))
+            text = _show(values[m.group(2)], m.group(3)) if m.group(2) in values else f"<{m.group(2)} not glued>"
+            after = _AFTER.match(src, m.end())
+            unit = after.group(1).rstrip(".") if after else ""
+            roles[key] = (text, unit if unit in UNITS else "")
+            return text
+
+        shown.append(ROLE.sub(sub, src))
+        static.append(ROLE.sub(" ", src))
+    return shown, static, roles
+
+
+def outputs_markdown(nb: dict) -> str:
+    return "\n".join("".join(o.get("data", {}).get("text/markdown", ""))
+                     for c in nb["cells"] if c["cell_type"] == "code" for o in c.get("outputs", [])
+                     if not o.get("metadata", {}).get("scrapbook"))
+
+
+def sentences(static: list[str]) -> list[str]:
+    """The static prose cut into sentences (a table row counts as one)."""
+    out = []
+    for text in static:
+        for para in re.split(r"\n\s*\n", text):
+            lines = para.strip().splitlines()
+            if lines and lines[0].startswith("|"):  # a table: each row read with its header
+                out += [f"{lines[0]} {row}" for row in lines[2:]]
+                continue
+            out += [s.strip() for s in re.split(r"(?<=[.!?:])\s+(?=[A-Z*])", " ".join(para.split()))]
+    return out
+
+
+def _static_hits(token: str, unit: str, static: list[str], skip_source: bool = False, fixed=()) -> list[str]:
+    tail = rf"[ \u00a0]*{re.escape(unit)}(?![\w/])" if unit else r"(?![\w]|\.\d)"
+    pat = re.compile(rf"(?<![\w.]){re.escape(token)}{tail}")
+    allowed = [phrase for tok, phrase, _why in fixed if tok == f"{token} {unit}".strip()]
+    return sorted({s for s in sentences(static) if pat.search(s) and not (skip_source and _about_the_note(s))
+                   and not any(phrase in s for phrase in allowed)})
+
+
+def param_units(chapter: str) -> dict:
+    """parameter -> unit, from the chapter's own registry (the source document's, or the design schema's)."""
+    from importlib import import_module
+
+    doc = chapter.split("/")[0]
+    if doc == "design":
+        from handbook.design import schema
+        table = {"cap_cd": "commutation", "class_d": "class_d", "current_limiter": "current_limiter",
+                 "converter": "converter"}.get(
+            chapter.split("/")[1])
+        return {prm.name: prm.unit for prm in schema.TABLES.get(table, ())} if table else {}
+    return {prm.name: prm.unit for prm in import_module(f"handbook.sources.{doc}").SOURCE.parameters}
+
+
+def param_default(nb: dict, key: str):
+    """The value the committed chapter's parameters cell gives ``key``."""
+    cell = next(c for c in nb["cells"] if "parameters" in c.get("metadata", {}).get("tags", []))
+    scope: dict = {}
+    exec("".join(cell["source"]), {}, scope)
+    return scope[key]
+
+
+def renderings(value: float, unit: str) -> list[tuple[str, str]]:
+    """How prose writes a value: '100 mV' and '0.1 V' for 0.1 V, '5 %' for a fraction, '1800 rpm'."""
+    from handbook.report import eng
+
+    unit = {"ohm": "Ω", "degC": "°C"}.get(unit, unit)
+    if unit in ("1", ""):
+        return [(f"{value * 100:g}", "%")] if 0 < value < 1 else []
+    out = [(f"{value:g}", unit)]
+    if unit not in ("rpm", "°C", "K"):
+        number, _, prefixed = eng(value, unit).partition(" ")
+        out.append((number, prefixed))
+    return out
+
+
+SOURCE_WORDS = re.compile(r"note|datasheet|table's|system table|printed|AN9400\d|AN93008|Example Design|example|\"|“")
+
+
+def _about_the_note(sentence: str) -> bool:
+    """A sentence that speaks of the source ("the note's 100 mV", a quotation, the datasheet's example)
+    states the source's values, which do not change with the reader's."""
+    return bool(SOURCE_WORDS.search(sentence))
+
+
+NUMBER_UNIT = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[ \u00a0]?(" + "|".join(sorted(map(re.escape, UNITS), key=len,
+                                                                                reverse=True)) + r")(?![\w/])")
+
+
+def problems(chapter: str, note_nb: dict, other_nb: dict) -> list[str]:
+    """What a reader of the re-run would find stated for the note's inputs instead of theirs."""
+    _, static, note_roles = render(note_nb)
+    shown, _, other_roles = render(other_nb)
+    note_glue, found = glued(note_nb), []
+    for key, (note_text, unit) in note_roles.items():
+        changed = other_roles.get(key, ("",))[0] != note_text
+        # a glued number is a token worth looking for when it has at least two digits or a unit
+        if changed and not isinstance(note_glue.get(key[0]), tuple):
+            if len(re.sub(r"\D", "", note_text)) >= 2 or (unit and re.search(r"\d", note_text)):
+                found += [f"glued {key[0]} = {note_text} {unit}, typed in: {line}"
+                          for line in _static_hits(note_text, unit, static, skip_source=True)]
+    # results the chapter's tables show for the note's inputs and no longer for the reader's
+    note_out, other_out = outputs_markdown(note_nb), outputs_markdown(other_nb)
+    gone = {m.group(0) for m in NUMBER_UNIT.finditer(note_out)} - {m.group(0) for m in NUMBER_UNIT.finditer(other_out)}
+    for token in sorted(gone):
+        number, unit = NUMBER_UNIT.match(token).groups()
+        if len(re.sub(r"\D", "", number)) >= 2:
+            found += [f"table result {token}, typed in: {line}"
+                      for line in _static_hits(number, unit, static, skip_source=True)]
+    # the note's inputs themselves, typed into prose that speaks of the reader's
+    for key, value in RERUNS[chapter].items():
+        if isinstance(value, (int, float)) and key in (units := param_units(chapter)):
+            default = param_default(note_nb, key)
+            for token, unit in renderings(default, units[key]):
+                found += [f"input {key} = {token} {unit}, typed in: {line}"
+                          for line in _static_hits(token, unit, static, True, FIXED.get(chapter, ()))]
+    page = "\n".join(shown) + "\n" + outputs_markdown(other_nb)
+    found += [f"still says {p!r}" for p in NOTE_ONLY.get(chapter, []) if p in page]
+    return list(dict.fromkeys(found))
+
+
+@pytest.mark.parametrize("chapter", sorted(RERUNS))
+def test_prose_follows_the_parameters(chapter, tmp_path_factory):
+    note_nb = json.loads((BOOK / f"{chapter}.ipynb").read_text())
+    other_nb = json.loads(rerun(chapter, tmp_path_factory).read_text())
+    # the re-run really changed what the chapter shows (else this test would check nothing)
+    assert outputs_markdown(note_nb) != outputs_markdown(other_nb) or glued(note_nb) != glued(other_nb)
+    found = problems(chapter, note_nb, other_nb)
+    assert not found, f"{chapter}: the re-run states the note's results as the reader's:\n" + "\n".join(found)
+
+
+# -- the numbers of three re-runs, worked by hand --------------------------------------------------
 
 def _glued(nb_path):
+    """(glued name -> value, every Markdown output joined) of an executed notebook."""
     nb = json.loads(Path(nb_path).read_text())
     out, tables = {}, []
     for cell in nb["cells"]:
@@ -26,12 +271,9 @@ def _glued(nb_path):
     return out, "\n".join(tables)
 
 
-def test_commutation_chapter_with_a_four_pole_pair_motor(tmp_path):
-    out = tmp_path / "out.ipynb"
-    pm.execute_notebook(str(BOOK / "an94002" / "commutation_delay.ipynb"), str(out),
-                        parameters={"pole_pairs": 4, "rpm_min": 900.0}, kernel_name="python3",
-                        cwd=str(BOOK / "an94002"), progress_bar=False)
-    g, tables = _glued(out)
+def test_commutation_chapter_with_a_four_pole_pair_motor(tmp_path_factory):
+    assert RERUNS["an94002/commutation_delay"] == {"pole_pairs": 4, "rpm_min": 900.0}
+    g, tables = _glued(rerun("an94002/commutation_delay", tmp_path_factory))
     bound = 22e-6 * 10 / (900 * 4 * 1.4)  # farads, worked by hand
     assert g["bound_nF"] == pytest.approx(bound * 1e9, rel=1e-9)
     assert g["c3_nF"] == pytest.approx(47.0)  # E12: 39 nF x 0.95 = 37.05 nF < 43.65 nF; 47 nF x 0.95 = 44.65 nF
@@ -41,12 +283,9 @@ def test_commutation_chapter_with_a_four_pole_pair_motor(tmp_path):
     assert "| 1.4 V | 1.4 V | exact |" in tables
 
 
-def test_opamp_limiter_chapter_with_a_matched_network_and_200mV(tmp_path):
-    out = tmp_path / "out.ipynb"
-    pm.execute_notebook(str(BOOK / "an94002" / "opamp_limiter.ipynb"), str(out),
-                        parameters={"resistor_tolerance": 0.001, "v_cs": 0.2}, kernel_name="python3",
-                        cwd=str(BOOK / "an94002"), progress_bar=False)
-    g, tables = _glued(out)
+def test_opamp_limiter_chapter_with_a_matched_network_and_200mV(tmp_path_factory):
+    assert RERUNS["an94002/opamp_limiter"] == {"resistor_tolerance": 0.001, "v_cs": 0.2}
+    g, tables = _glued(rerun("an94002/opamp_limiter", tmp_path_factory))
     r9 = 0.2 * 21.6e3 / (8.2 - 0.2)  # eq 14 solved for R9, by hand
     assert g["r9_target"] == pytest.approx(r9, rel=1e-12)
     # worst case by hand at the high corner: every part at its least favourable end
@@ -58,14 +297,10 @@ def test_opamp_limiter_chapter_with_a_matched_network_and_200mV(tmp_path):
     assert "| sense signal at the op-amp input for V_cs = 100 mV | 74.1 mV | 148.1 mV | n/a |" in tables
 
 
-def test_design_your_own_with_the_fan_spec(tmp_path):
-    out = tmp_path / "out.ipynb"
-    spec = tmp_path / "fan.toml"
-    spec.write_text("[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n"
-                    "[current_limiter]\ni_no_trip = 0.3\ni_must_trip = 0.7\n")
-    pm.execute_notebook(str(BOOK / "design" / "your_own.ipynb"), str(out), parameters={"spec_file": str(spec)},
-                        kernel_name="python3", cwd=str(BOOK / "design"), progress_bar=False)
-    _, tables = _glued(out)
+def test_design_your_own_with_the_fan_spec(tmp_path_factory):
+    assert FAN == ("[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n"
+                   "[current_limiter]\ni_no_trip = 0.3\ni_must_trip = 0.7\n")
+    _, tables = _glued(rerun("design/your_own", tmp_path_factory))
     # CAP-CD by hand: 11 uA (the source column's maximum) for 10/(1500*2) s over the narrowest window
     # 2.3 V - 0.9 V at -5 % -> 27.6 nF -> E12 33 nF
     assert 11e-6 * (10 / 3000) / 1.4 / 0.95 == pytest.approx(27.57e-9, rel=1e-3)

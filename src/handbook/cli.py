@@ -132,23 +132,19 @@ def _print_designs(out: dict, failed: dict) -> None:
             print(f"  cannot be met: {failed[table]}")
             continue
         for o in OUTPUTS[table]:
-            print(f"  {o.label.ljust(lw)}  {_shown(out[table][o.key], o.unit, shown_value)}")
+            print(f"  {o.label.ljust(lw)}  {shown_value(out[table][o.key], o.unit)}")
         for key, value in out[table].get("spice", {}).items():
-            print(f"  SPICE: {key:38s} {value:.4g}")
+            print(f"  SPICE: {key:38s} {_spice_value(key, value)}")
 
 
-def _shown(v, unit: str, shown_value) -> str:
-    """shown_value, and the converter's units it leaves plain: times, lengths and flux densities with SI
-    prefixes (25.35 us, 63.3 um, 235 mT), kelvin and pure numbers without a unit symbol."""
+def _spice_value(key: str, value) -> str:
+    """A --spice figure with its unit: currents, frequencies, voltages (swings, headroom, ripple), yes/no."""
     from .report.tables import eng
 
-    if isinstance(v, float) and unit in ("s", "m", "T"):
-        return eng(v, unit)
-    if isinstance(v, float) and unit == "K":
-        return f"{v:.3g} K"
-    if isinstance(v, float) and unit == "1":
-        return f"{v:.4g}"
-    return shown_value(v, unit)
+    if isinstance(value, bool) or key in ("ok", "window_reached"):
+        return "yes" if value else "no"
+    unit = "A" if key.startswith("i_") else "Hz" if key.startswith("f_") else "V"
+    return eng(value, unit) + (" rms" if key.startswith("ripple") else "")
 
 
 def cmd_spice(args) -> int:

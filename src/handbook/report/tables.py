@@ -124,8 +124,8 @@ def shown_value(v, unit: str) -> str:
         return f"{v:.2%}"
     if unit == "C":
         return f"{v:.4g} °C"
-    if unit in ("F", "ohm", "A", "W", "V", "Hz", "H"):
+    if unit in ("F", "ohm", "A", "W", "V", "Hz", "H", "s", "m", "T"):
         return eng(v, unit.replace("ohm", "Ω"))
     if isinstance(v, float):
-        return f"{v:.4g}" + (f" {unit}" if unit else "")
+        return f"{v:.4g}" + (f" {unit}" if unit not in ("", "1") else "")
     return str(v)
