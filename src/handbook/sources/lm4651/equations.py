@@ -17,8 +17,13 @@ R1, R2, Rf11, Rf12 = sp.symbols("R_1 R_2 R_{f11} R_{f12}", positive=True)
 tr, tf, tom, Cs, Rp, epsr, Ar, d = sp.symbols(r"t_r t_f T_{OVERMOD} C_{START} R_{SCKT} \epsilon_r A d", positive=True)
 dV, Vk, Cfl1, Cfl2, Rfl3, Cin = sp.symbols("dV V_k C_{fl1} C_{fl2} R_{fl3} C_{IN}", positive=True)
 w = sp.Symbol("omega", positive=True)
-#: the printed (number-only) symbols: C_START_n is C_START / F, and so on
-n = {s: sp.Symbol("{" + s.name + "}_{n}", positive=True) for s in (Cs, t, Rp, R, f, x)}  # braced: no double subscript
+#: the printed (number-only) symbols, written as ISO 80000-1 writes a quantity's numerical value in a unit:
+#: {C_START}_F is C_START / F
+Rosc, Rdly = sp.symbols("R_{OSC} R_{DLY}", positive=True)
+_BASE_TEX = {Cs: r"\mathrm{F}", t: r"\mathrm{s}", Rp: r"\Omega", R: r"\Omega", f: r"\mathrm{Hz}", x: "1",
+             Rosc: r"\Omega", Rdly: r"\Omega"}
+n = {s: sp.Symbol(r"\{" + s.name + r"\}" + ("" if u_ == "1" else "_{" + u_ + "}"), positive=True)
+     for s, u_ in _BASE_TEX.items()}
 
 
 def _corner(r, c):
@@ -73,11 +78,12 @@ def eq3() -> Equation:
 def eq4() -> Equation:
     return Equation(
         id="lm4651-eq4", source=f"{NAME}, eq (4)", title="Dead time", lhs=T, lhs_unit=S, lhs_scale=S,
-        printed=sp.Rational(17, 10 ** 13) * (500 + n[R]), scales={n[R]: R / OHM}, units={R: OHM},
-        printed_tex=r"1.7 \times 10^{-12} (500 + R_{DLY})", law=NO_LAW, empirical=True,
+        printed=sp.Rational(17, 10 ** 13) * (500 + n[Rdly]), scales={n[Rdly]: Rdly / OHM}, units={Rdly: OHM},
+        printed_tex=r"1.7 \times 10^{-12} (500 + \{R_{DLY}\}_{\Omega})",
+        law=NO_LAW, empirical=True,
         fitted_to="an unstated figure: the only dead time the datasheet prints, 27 ns at R_DLY = 0, is 32 times the "
                   "printed form's 0.85 ns there, and the slope (1.7 ns per k) has no figure to check it against",
-        table=(_pt("LM4651 table, T_dead at R_DLY = 0", r"R_{DLY} = 0", {R: 0.0}, "27", "ns"),),
+        table=(_pt("LM4651 table, T_dead at R_DLY = 0", r"R_{DLY} = 0", {Rdly: 0.0}, "27", "ns"),),
         note="As printed it gives 0.85 ns at R_DLY = 0 against the table's 27 ns; the design uses 27 ns plus eq 4's "
              "slope.")
 
@@ -85,21 +91,21 @@ def eq4() -> Equation:
 def eq5() -> Equation:
     return Equation(
         id="lm4651-eq5", source=f"{NAME}, eq (5)", title="Switching frequency", lhs=f, lhs_unit=HZ, lhs_scale=HZ,
-        printed=10 ** 9 / (4000 + n[R]), scales={n[R]: R / OHM}, units={R: OHM}, law=NO_LAW, empirical=True,
+        printed=10 ** 9 / (4000 + n[Rosc]), scales={n[Rosc]: Rosc / OHM}, units={Rosc: OHM}, law=NO_LAW, empirical=True,
         fitted_to="125 kHz at R_OSC = 4 k (the LM4651 table's duty-cycle row), for R_DLY = 0; a period linear in "
                   "R_OSC is the form's assumption, the oscillator is not shown",
-        table=(_pt("LM4651 table, f_SWerror row", r"R_{OSC} = 4" + _KOHM, {R: 4e3}, "125", "kHz"),
-               _pt("LM4651 table, f_SW at R_OSC = 15 k", r"R_{OSC} = 15" + _KOHM, {R: 15e3}, "65", "kHz"),
-               _pt("LM4651 table, f_SW at R_OSC = 0", r"R_{OSC} = 0", {R: 0.0}, "200", "kHz", sig=3),
-               _pt("pin 16 description, 15.5 k", r"R_{OSC} = 15.5" + _KOHM, {R: 15.5e3}, "75", "kHz"),
-               _pt("pin 16 description, 0 ohm", r"R_{OSC} = 0", {R: 0.0}, "225", "kHz")),
+        table=(_pt("LM4651 table, f_SWerror row", r"R_{OSC} = 4" + _KOHM, {Rosc: 4e3}, "125", "kHz"),
+               _pt("LM4651 table, f_SW at R_OSC = 15 k", r"R_{OSC} = 15" + _KOHM, {Rosc: 15e3}, "65", "kHz"),
+               _pt("LM4651 table, f_SW at R_OSC = 0", r"R_{OSC} = 0", {Rosc: 0.0}, "200", "kHz", sig=3),
+               _pt("pin 16 description, 15.5 k", r"R_{OSC} = 15.5" + _KOHM, {Rosc: 15.5e3}, "75", "kHz"),
+               _pt("pin 16 description, 0 ohm", r"R_{OSC} = 0", {Rosc: 0.0}, "225", "kHz")),
         note="The table's points lie 20 % below and 23.5 % above eq 5; the design carries that spread as eq 5's "
              "tolerance.")
 
 
 def eq6() -> Equation:
     return Equation(
-        id="lm4651-eq6", source=f"{NAME}, eq (6)", title="R_OSC for a frequency", lhs=R, lhs_unit=OHM, lhs_scale=OHM,
+        id="lm4651-eq6", source=f"{NAME}, eq (6)", title="R_OSC for a frequency", lhs=Rosc, lhs_unit=OHM, lhs_scale=OHM,
         printed=10 ** 9 / n[f] - 4000, scales={n[f]: f / HZ}, units={f: HZ}, law=NO_LAW, empirical=True,
         fitted_to="eq 5 solved for R_OSC (R_DLY = 0; the text adds about 2 k for R_DLY = 5 k)",
         table=(_pt("LM4651 table, f_SWerror row", r"f_{SW} = 125\,\mathrm{kHz}", {f: 125e3}, "4", "kohm"),
