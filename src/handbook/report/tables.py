@@ -45,6 +45,10 @@ def examples_table(rows: list[dict], source: bool = False) -> Markdown:
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in rows:
         printed, shown = _in_printed_unit(r["printed_text"], r["computed"])
+        if r["status"] == "n/a":  # the row names the note's inputs: a value for the reader's would be mislabelled
+            shown = "—"
+        elif r.get("relation") in (">=", "<="):  # a bound: the print is compared with it, not equated
+            shown = f"{shown} (printed {'≥' if r['relation'] == '>=' else '≤'} this)"
         cells = [r["source"]] * source + [r["quantity"], printed, shown, BADGE[r["status"]], r["reason"]]
         lines.append("| " + " | ".join(_cell(c) for c in cells) + " |")
     return Markdown("\n".join(lines))
@@ -124,6 +128,8 @@ def shown_value(v, unit: str) -> str:
         return f"{v:.2%}"
     if unit == "C":
         return f"{v:.4g} °C"
+    if unit == "rpm" and isinstance(v, float):
+        return f"{v:.0f} rpm"
     if unit in ("F", "ohm", "A", "W", "V", "Hz", "H", "s", "m", "T"):
         return eng(v, unit.replace("ohm", "Ω"))
     if isinstance(v, float):
