@@ -46,6 +46,8 @@ RERUNS = {
 # sentences that state a value equal to an input's note value on purpose: the value is fixed there, whatever
 # the parameters cell holds (chapter -> (token, a phrase of the sentence, why))
 FIXED = {
+    "design/current_limiter": [("1.8002 A", "The earlier version of this design fixed the corner",
+                                "a counterexample to an earlier version, at the default spec, named as such")],
     "lm4651/equations": [("4 Ω", "SPICE puts the corner", "the simulation runs both loads, 4 and 8 ohm, always"),
                          ("4 Ω", "The residue at the load is", "the 4 ohm run of the two"),
                          ("4 Ω", "Two runs per load", "the two loads simulated")],
@@ -151,14 +153,6 @@ def sentences(static: list[str]) -> list[str]:
     return out
 
 
-def _static_hits(token: str, unit: str, static: list[str], skip_source: bool = False, fixed=()) -> list[str]:
-    tail = rf"[ \u00a0]*{re.escape(unit)}(?![\w/])" if unit else r"(?![\w]|\.\d)"
-    pat = re.compile(rf"(?<![\w.]){re.escape(token)}{tail}")
-    allowed = [phrase for tok, phrase, _why in fixed if tok == f"{token} {unit}".strip()]
-    return sorted({s for s in sentences(static) if pat.search(s) and not (skip_source and _about_the_note(s))
-                   and not any(phrase in s for phrase in allowed)})
-
-
 def param_units(chapter: str) -> dict:
     """parameter -> unit, from the chapter's own registry (the source document's, or the design schema's)."""
     from importlib import import_module
@@ -181,60 +175,120 @@ def param_default(nb: dict, key: str):
     return scope[key]
 
 
-def renderings(value: float, unit: str) -> list[tuple[str, str]]:
-    """How prose writes a value: '100 mV' and '0.1 V' for 0.1 V, '5 %' for a fraction, '1800 rpm'."""
-    from handbook.report import eng
-
-    unit = {"ohm": "Ω", "degC": "°C"}.get(unit, unit)
+def si_value(value: float, unit: str) -> tuple[str, float] | None:
+    """A parameter's value as (base unit, SI value): ('Ω', 5600.0); a fraction as ('%', 5.0)."""
+    unit = {"ohm": "Ω", "degC": "°C", "C": "°C"}.get(unit, unit)
     if unit in ("1", ""):
-        return [(f"{value * 100:g}", "%")] if 0 < value < 1 else []
-    out = [(f"{value:g}", unit)]
-    if unit not in ("rpm", "°C", "K"):
-        number, _, prefixed = eng(value, unit).partition(" ")
-        out.append((number, prefixed))
+        return ("%", value * 100) if 0 < value < 1 else None
+    return (unit, float(value)) if unit in BASES else None
+
+
+# -- values in prose, compared in SI -----------------------------------------------------------------------------
+
+BASES = ("F", "Ω", "A", "V", "s", "Hz", "W", "H", "rpm", "%", "K/W", "°C", "K", "dB", "m", "T")
+PREFIXES = {"p": 1e-12, "n": 1e-9, "µ": 1e-6, "u": 1e-6, "m": 1e-3, "k": 1e3, "M": 1e6}
+_UNIT_WORDS = sorted({b for b in BASES} | {p + b for p in PREFIXES for b in ("F", "Ω", "A", "V", "s", "Hz", "W", "H",
+                                                                             "m", "T")} | {"k"}, key=len, reverse=True)
+TOKEN = re.compile(r"(?<![\w.])([-+−]?\d+(?:[.,]\d+)?)[ \u00a0]?(" + "|".join(map(re.escape, _UNIT_WORDS))
+                   + r")(?![\w/])")
+# a value the sentence gives as the source's own: attributed just before it, or quoted
+ATTRIBUTED = re.compile(r"(note's|notes'|printed|prints|datasheet's|the datasheet|AN9400\d|AN93008|Example Design|"
+                        r"example's|table's|the note|typical circuit's|default|defaults)\W+(\w+\W+){0,4}$",
+                        re.IGNORECASE)
+ATTRIBUTED_AFTER = re.compile(r"^\W*(\w+\W+){0,2}(example|as printed)\b", re.IGNORECASE)
+
+
+def unit_si(number: str, unit: str) -> tuple[str, float] | None:
+    """('F', 1.8e-08) for ('18', 'nF'); 'k' alone is kilohm, as the notes write it; None for a non-unit."""
+    value = float(number.replace("−", "-").replace(",", "."))
+    if unit == "k":
+        return "Ω", value * 1e3
+    if unit in BASES:
+        return unit, value
+    if unit[0] in PREFIXES and unit[1:] in BASES:
+        return unit[1:], value * PREFIXES[unit[0]]
+    return None
+
+
+def values_in(text: str) -> list[tuple[str, float, str]]:
+    """Every (base unit, SI value, token) a text states."""
+    out = []
+    for m in TOKEN.finditer(text):
+        v = unit_si(*m.groups())
+        if v:
+            out.append((*v, m.group(0)))
     return out
 
 
-SOURCE_WORDS = re.compile(r"note|datasheet|table's|system table|printed|AN9400\d|AN93008|Example Design|example|\"|“")
+def _about_the_source(sentence: str, start: int, end: int) -> bool:
+    before = sentence[:start]
+    quoted = (before.count('"') + before.count("“") - before.count("”")) % 2 == 1
+    return bool(ATTRIBUTED.search(before) or ATTRIBUTED_AFTER.search(sentence[end:])) or quoted
 
 
-def _about_the_note(sentence: str) -> bool:
-    """A sentence that speaks of the source ("the note's 100 mV", a quotation, the datasheet's example)
-    states the source's values, which do not change with the reader's."""
-    return bool(SOURCE_WORDS.search(sentence))
+def stated(static: list[str], fixed=()) -> list[tuple[str, float, str, str]]:
+    """Every value the static prose states as the reader's result: (base, SI value, token, sentence); values the
+    sentence attributes to the source (the note's 18 nF, a quotation, a table whose header names the datasheet)
+    and the chapter's FIXED sentences are left out."""
+    out = []
+    for sent in sentences(static):
+        header = sent.split("| |")[0] if sent.startswith("|") else ""
+        if re.search(r"datasheet|printed|note", header, re.IGNORECASE) or any(ph in sent for _t, ph, _w in fixed):
+            continue
+        for m in TOKEN.finditer(sent):
+            v = unit_si(*m.groups())
+            if v and not _about_the_source(sent, m.start(), m.end()):
+                out.append((*v, m.group(0), sent))
+    return out
 
 
-NUMBER_UNIT = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[ \u00a0]?(" + "|".join(sorted(map(re.escape, UNITS), key=len,
-                                                                                reverse=True)) + r")(?![\w/])")
+def _written_as(token: str, typed: float, value: float) -> bool:
+    """Whether ``token`` (typed = its SI value) writes ``value``: exactly, or rounded to the token's digits when it
+    has two or more significant ones (14.6 nF writes 14.55 nF; 2 V does not write 1.997 V)."""
+    number = TOKEN.match(token).group(1).replace("−", "-").replace(",", ".")
+    if float(number) == 0 or value == 0:
+        return typed == value
+    scale = typed / float(number)
+    digits = len(number.lstrip("+-").replace(".", "").lstrip("0"))
+    if digits < 2:
+        return abs(typed - value) <= 1e-9 * abs(value)
+    decimals = len(number.split(".")[1]) if "." in number else 0
+    return abs(round(value / scale, decimals) - float(number)) <= 1e-9 * abs(float(number))
+
+
+def _same(a: float, b: float) -> bool:
+    return abs(a - b) <= 5e-3 * max(abs(a), abs(b)) and (a != 0 or b == 0)
 
 
 def problems(chapter: str, note_nb: dict, other_nb: dict) -> list[str]:
-    """What a reader of the re-run would find stated for the note's inputs instead of theirs."""
+    """What a reader of the re-run would find stated for the note's inputs instead of theirs: every value of the
+    note's run (glued into prose, shown in a table, or an input of the parameters cell) that the re-run no longer
+    has, found typed in the static prose in any form (18 nF, 0.018 µF, 18.0 nF)."""
     _, static, note_roles = render(note_nb)
     shown, _, other_roles = render(other_nb)
-    note_glue, found = glued(note_nb), []
-    for key, (note_text, unit) in note_roles.items():
-        changed = other_roles.get(key, ("",))[0] != note_text
-        # a glued number is a token worth looking for when it has at least two digits or a unit
-        if changed and not isinstance(note_glue.get(key[0]), tuple):
-            if len(re.sub(r"\D", "", note_text)) >= 2 or (unit and re.search(r"\d", note_text)):
-                found += [f"glued {key[0]} = {note_text} {unit}, typed in: {line}"
-                          for line in _static_hits(note_text, unit, static, skip_source=True)]
-    # results the chapter's tables show for the note's inputs and no longer for the reader's
-    note_out, other_out = outputs_markdown(note_nb), outputs_markdown(other_nb)
-    gone = {m.group(0) for m in NUMBER_UNIT.finditer(note_out)} - {m.group(0) for m in NUMBER_UNIT.finditer(other_out)}
-    for token in sorted(gone):
-        number, unit = NUMBER_UNIT.match(token).groups()
-        if len(re.sub(r"\D", "", number)) >= 2:
-            found += [f"table result {token}, typed in: {line}"
-                      for line in _static_hits(number, unit, static, skip_source=True)]
-    # the note's inputs themselves, typed into prose that speaks of the reader's
-    for key, value in RERUNS[chapter].items():
-        if isinstance(value, (int, float)) and key in (units := param_units(chapter)):
-            default = param_default(note_nb, key)
-            for token, unit in renderings(default, units[key]):
-                found += [f"input {key} = {token} {unit}, typed in: {line}"
-                          for line in _static_hits(token, unit, static, True, FIXED.get(chapter, ()))]
+    note_glue = glued(note_nb)
+    note_vals: dict[tuple, str] = {}  # (base, SI value) -> what the note's run had and the re-run has not
+    for key, (text, unit) in note_roles.items():  # glued values that changed
+        if not isinstance(note_glue.get(key[0]), tuple) and other_roles.get(key, ("",))[0] != text:
+            for base, v, _tok in values_in(f"{text} {unit}"):
+                note_vals[(base, v)] = f"glued {key[0]} = {text} {unit}"
+    other_tables = values_in(outputs_markdown(other_nb))
+    for base, v, tok in values_in(outputs_markdown(note_nb)):  # table values the re-run no longer shows
+        if not any(b == base and _same(v, ov) for b, ov, _t in other_tables):
+            note_vals.setdefault((base, v), f"table result {tok}")
+    units = param_units(chapter)
+    for key, value in RERUNS[chapter].items():  # the inputs the re-run changed
+        if isinstance(value, (int, float)) and key in units and (sv := si_value(param_default(note_nb, key), units[key])):
+            note_vals[sv] = f"input {key} = {param_default(note_nb, key)} {units[key]}"
+    # a value that is also the reader's (a glued value or an input of the re-run) is right for both
+    still = [(b, v) for b, v, _t in values_in("\n".join(t + " " + u for t, u in other_roles.values()))]
+    still += [si_value(v, units[k]) for k, v in RERUNS[chapter].items()
+              if isinstance(v, (int, float)) and k in units and si_value(v, units[k])]
+    found = []
+    for base, v, tok, sent in stated(static, FIXED.get(chapter, ())):
+        gone = [what for (b, nv), what in note_vals.items() if b == base and _written_as(tok, v, nv)]
+        if gone and not any(b == base and _same(v, sv) for b, sv in still):
+            found.append(f"{gone[0]}, typed in as {tok}: {sent}")
     page = "\n".join(shown) + "\n" + outputs_markdown(other_nb)
     found += [f"still says {p!r}" for p in NOTE_ONLY.get(chapter, []) if p in page]
     return list(dict.fromkeys(found))
