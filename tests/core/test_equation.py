@@ -68,6 +68,24 @@ def test_rounded_to_the_safe_side_and_wrong_method_are_statuses_of_their_own():
     assert status["an94002-c2"] == "bound met"
 
 
+def test_a_truncated_last_digit_is_rounding_only_where_the_print_is_the_truncation():
+    from handbook.core import Claim
+
+    def claim(text, value, **kw):
+        return Claim(id="t", where="w", quantity="q", printed=Printed(text, "Hz"), compute=lambda p: value,
+                     reason="22.755 truncated to 22.7", chapter="c", **kw)
+
+    assert claim("22.7", 22.755).evaluate({}, {})["status"] == "misprint"
+    assert claim("22.7", 22.755, truncated=True).evaluate({}, {})["status"] == "rounding"
+    assert claim("22.8", 22.755, truncated=True).evaluate({}, {})["status"] == "rounding"  # rounded anyway
+    # 6.366 truncates to 6.36, not 6.35; 22.755 never truncates to 22.6: still misprints
+    assert claim("6.35", 6.366, truncated=True).evaluate({}, {})["status"] == "misprint"
+    assert claim("22.6", 22.755, truncated=True).evaluate({}, {})["status"] == "misprint"
+    with pytest.raises(ValueError, match="truncated"):
+        Claim(id="t", where="w", quantity="q", printed=Printed("22.7", "Hz"), compute=lambda p: 22.755,
+              reason="22.755 Hz", chapter="c", truncated=True)
+
+
 @pytest.mark.parametrize("bad", [math.nan, math.inf])
 def test_classify_refuses_non_finite(bad):
     with pytest.raises(ValueError, match="finite"):

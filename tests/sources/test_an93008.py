@@ -15,12 +15,17 @@ HAND_93 = {
     "an93008-vcs-at-opamp": 0.1 * A, "an93008-window-high": 0.1 * A + 0.009, "an93008-window-low": 0.1 * A - 0.009,
     "an93008-offset-tol": 0.009 / (0.1 * A), "an93008-supply-tol": 0.1, "an93008-b": A * 10.7 / 10.8,
     "an93008-r10": 33e3 * (1 - A * 10.7 / 10.8) / (A * 10.7 / 10.8), "an93008-total-supply": 1.11 * 1.1 * 1.05 - 1,
-    "an93008-vz-min": 7.7, "an93008-factor-a-zener": 1 - 2 / 7.79, "an93008-offset-tol-zener": 9 / 74,
+    "an93008-vz-min": 7.7, "an93008-factor-a-zener": 1 - 2 / 7.7, "an93008-offset-tol-zener": 9 / 74,
     "an93008-zener-drift": 0.155, "an93008-zener-drift-pct": 0.155 / 7.7, "an93008-zener-total": 0.07,
     "an93008-total-zener": 1.12 * 1.07 * 1.05 - 1, "an93008-zener-total-a": 0.03,
     "an93008-total-zener-a": 1.12 * 1.03 * 1.05 - 1,
+    # against the BZX79-C8V2 datasheet (7.7 to 8.7 V at 5 mA, up to +0.08 %/K)
+    "an93008-zener-spread": 0.5 / 8.2,  # both limits 0.5 V from 8.2 V: +-6.1 %
+    "an93008-zener-tc": 0.0008 * 8.2,  # 6.56 mV/K
+    "an93008-zener-share": 0.5 / 8.2 + 6.2e-3 * 25 / 7.7,  # 6.10 % + the note's 2.01 % drift = 8.11 %
 }
 MISPRINTS = set()
+INCONSISTENT = {"an93008-zener-spread", "an93008-zener-tc", "an93008-zener-share"}
 WRONG = {"an93008-resistor-tol"}  # a wrong method, which errata lists with the misprints
 
 
@@ -35,7 +40,9 @@ def test_statuses():
     assert {r["id"] for r in rows} == set(HAND_93) | {"an93008-resistor-tol"}
     assert {r["id"] for r in rows if r["status"] == "misprint"} == MISPRINTS
     assert {r["id"] for r in rows if r["status"] == "wrong method"} == WRONG
-    assert all(r["status"] in ("exact", "rounding") for r in rows if r["id"] not in MISPRINTS | WRONG)
+    assert {r["id"] for r in rows if r["status"] == "inconsistent"} == INCONSISTENT
+    assert all(r["status"] in ("exact", "rounding") for r in rows if r["id"] not in MISPRINTS | WRONG | INCONSISTENT)
+    assert all(r["consequence"] for r in rows if r["id"] in INCONSISTENT)
     # R10 = 7.87 k follows from the rounded A = 0.815, not from the exact 0.81481
     assert {r["id"]: r["status"] for r in rows}["an93008-r10"] == "rounding"
 
@@ -96,3 +103,35 @@ def test_the_7v7_zener_minimum_is_not_a_misprint_and_the_ground_erratum():
     assert "an93008-vz-min" not in {r["id"] for r in catalog.errata("AN93008")}
     text = {e.id: e for e in an93008.SOURCE.errata}["an93008-t-gnd"]
     assert "GND3" in text.evidence and "AN94002" in text.source
+
+
+def test_the_zener_errata_match_an94002s_by_hand():
+    rows = {r["id"]: r for r in an93008.evaluate()}
+    errata = {r["id"] for r in catalog.errata("AN93008")}
+    assert INCONSISTENT <= errata
+    # "8.2 V +-5 % (BZX79 C 8V2)": the datasheet's 7.7 .. 8.7 V is -6.10 % / +6.10 %
+    spread = max(8.2 - 7.7, 8.7 - 8.2) / 8.2
+    assert spread == pytest.approx(0.0610, abs=5e-5)
+    assert rows["an93008-zener-spread"]["computed"] == pytest.approx(spread, rel=1e-12)
+    assert rows["an93008-zener-spread"]["printed"] == 0.05
+    # "+-5 % ... +-7 %": 6.10 % + 155 mV / 7.7 V (2.01 %) = 8.11 %; the total 1.12 x 1.081 x 1.05 is +27 %
+    with_drift = spread + 6.2e-3 * 25 / 7.7
+    assert with_drift == pytest.approx(0.0811, abs=5e-5)
+    assert rows["an93008-zener-share"]["computed"] == pytest.approx(with_drift, rel=1e-12)
+    assert round((1.12 * (1 + with_drift) * 1.05 - 1) * 100) == 27
+    # "max. 6.2 mV/°C": the datasheet's +0.08 %/K at 8.2 V is 6.56 mV/K; over 25 K, 164 mV, 2.13 % of 7.7 V
+    tc = 0.08e-2 * 8.2
+    assert tc == pytest.approx(6.56e-3, rel=1e-12)
+    assert rows["an93008-zener-tc"]["computed"] == pytest.approx(tc, rel=1e-12)
+    assert tc * 25 == pytest.approx(0.164, abs=5e-4) and tc * 25 / 7.7 == pytest.approx(0.0213, abs=5e-5)
+    assert spread + tc * 25 / 7.7 == pytest.approx(0.0823, abs=5e-5)  # "about +-8.2 %" with the datasheet's drift
+    for ex_id in INCONSISTENT:
+        assert rows[ex_id]["basis"] == "BZX79 datasheet"
+
+
+def test_factor_a_uses_the_notes_own_7v7():
+    rows = {r["id"]: r for r in an93008.evaluate()}
+    # "The minimum zener voltage is 0.95 x 8.2 = 7.7 V ... The factor A ... will now be 0.74": 1 - 2 / 7.7
+    assert rows["an93008-factor-a-zener"]["computed"] == pytest.approx(0.74026, abs=5e-6)
+    assert rows["an93008-factor-a-zener"]["status"] == "rounding"
+    assert rows["an93008-vz-min"]["computed"] == 7.7

@@ -28,7 +28,7 @@ HAND = {
 STATUS = {
     "inconsistent": {"lm4651-f-15k", "lm4651-f-0", "lm4651-dead-time", "lm4651-overmod", "lm4651-eps0",
                      "lm4651-f-pin-15k5", "lm4651-f-pin-0", "lm4651-pd-75k", "lm4651-eta-5w", "lm4651-l1-rating"},
-    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-cstart", "lm4651-gain-4k7", "lm4651-hp-corner"},
+    "misprint": {"lm4651-rosc", "lm4651-isckt", "lm4651-gain-4k7", "lm4651-hp-corner"},
     "conservative": {"lm4651-theta-tf", "lm4651-theta-t"},  # 2.5 and 3.5 K/W: rounded down to the better heat sink
 }
 
@@ -45,6 +45,17 @@ def test_statuses_and_consequences():
         assert {r["id"] for r in rows if r["status"] == status} == ids
     assert all(r["status"] in ("exact", "rounding") for r in rows if r["id"] not in set().union(*STATUS.values()))
     assert all(r["consequence"] for r in rows if r["status"] in ("misprint", "inconsistent"))
+
+
+def test_truncations_are_rounding_and_the_hp_corner_is_not_one():
+    rows = {r["id"]: r for r in lm4651.evaluate()}
+    # 1 / 8.5e4 = 11.76 uF printed 11.7: truncated (rounding gives 11.8)
+    assert math.floor(1e6 / 8.5e4 * 10) / 10 == 11.7
+    assert rows["lm4651-cstart"]["status"] == "rounding" and "truncated" in rows["lm4651-cstart"]["reason"]
+    # 1 / (2 pi 25 k 1 uF) = 6.366 Hz: truncated 6.36, rounded 6.37; the printed 6.35 is neither
+    f = 1 / (2 * math.pi * 25e3 * 1e-6)
+    assert math.floor(f * 100) / 100 == 6.36 and round(f, 2) == 6.37
+    assert rows["lm4651-hp-corner"]["status"] == "misprint"
 
 
 EMPIRICAL = {"lm4651-eq1", "lm4651-eq2", "lm4651-eq3", "lm4651-eq4", "lm4651-eq5", "lm4651-eq6", "lm4651-eq9"}
@@ -150,3 +161,35 @@ def test_the_three_r1_values_are_an_erratum_with_their_corners():
         assert 1 / (2 * math.pi * r1 * 1e-6) == pytest.approx(corner, abs=0.05)
         assert f"{corner:.1f} Hz" in text.evidence
 
+    # the advice: 4.7 uF with 4.7 k is 7.2 Hz (not 6.8 Hz), below the Example's 20 k x 1 uF (8.0 Hz, matched by
+    # 20/4.7 = 4.26 uF); 6.8 uF gives 5.0 Hz, below the DC-offset section's 25 k x 1 uF (6.4 Hz, 25/4.7 = 5.32 uF)
+    for c, corner in ((4.7e-6, 7.2), (6.8e-6, 5.0)):
+        assert 1 / (2 * math.pi * 4.7e3 * c) == pytest.approx(corner, abs=0.05)
+        assert f"{c * 1e6:.1f} uF ({corner:.1f} Hz" in text.consequence
+    assert 20e3 * 1e-6 / 4.7e3 == pytest.approx(4.26e-6, abs=0.005e-6) and "4.26 uF" in text.consequence
+    assert 25e3 * 1e-6 / 4.7e3 == pytest.approx(5.32e-6, abs=0.005e-6) and "5.32 uF" in text.consequence
+    assert "6.8 Hz" not in text.consequence
+
+
+def test_the_3k9_oscillator_resistor_overheats_the_example_both_ways():
+    consequence = {c.id: c for c in lm4651.SOURCE.claims()}["lm4651-rosc"].consequence
+    f = 1e9 / (4000 + 3900 - 0.4 * 5000)  # eq 5 with the R_DLY correction: 169.5 kHz
+    assert f == pytest.approx(169.5e3, abs=50) and "169.5 kHz" in consequence
+
+    def p_d(f_sw, t_overmod):  # eq 9, eq 10 and 2 x 0.230 ohm, as the Example Design
+        x = (25e-9 + 26e-9 + t_overmod) * f_sw
+        return x * 125 / (1 - x) + 125 / 4 * 0.46
+
+    t_j = lambda p: 50 + p * (2.0 + 0.2 + 2.5)  # TF package, grease, the example's 2.5 K/W heat sink
+    for t_ov, p_text, p_ref_text, tj_text in ((350e-9, "23.5 W", "21.0 W", "160 C"),
+                                                (310e-9, "22.5 W", "20.3 W", "156 C")):
+        assert f"{p_d(f, t_ov):.1f} W" == p_text and f"{p_d(125e3, t_ov):.1f} W" == p_ref_text
+        assert f"{t_j(p_d(f, t_ov)):.0f} C" == tj_text and t_j(p_d(f, t_ov)) > 150
+        assert f"{p_text} instead of {p_ref_text}" in consequence and tj_text in consequence
+    assert t_j(p_d(125e3, 350e-9)) == pytest.approx(148.6, abs=0.05) and "149 C" in consequence
+    # the project's own functions agree with the hand calculation
+    from handbook.sources.lm4651.circuit import f_sw_for, p_conduction, p_switch, t_junction
+    times = {"t_rise": 25e-9, "t_fall": 26e-9, "t_overmod": 350e-9}
+    p_fn = p_switch(f_sw_for(3.9e3, 5e3), 125.0, **times) + p_conduction(125.0, 4.0, 0.230)
+    assert p_fn == pytest.approx(p_d(f, 350e-9), rel=1e-12)
+    assert t_junction(p_fn, 50.0, 2.5, "TF", 0.2) == pytest.approx(t_j(p_d(f, 350e-9)), rel=1e-12)

@@ -132,18 +132,27 @@ class Claim:
     consequence: str = ""  # for a misprint or an inconsistency: what it means for a designer
     safe_side: str = ""  # "below" or "above": the side a designer may round to on purpose (a heat sink's K/W)
     method_wrong: bool = False  # the number follows the note's arithmetic but the method itself is wrong
+    truncated: bool = False  # the last printed digit is cut off, not rounded (22.755 printed 22.7): a rounding matter
+
+    def __post_init__(self):
+        if self.truncated and "truncated" not in self.reason:
+            raise ValueError(f"{self.id}: a claim marked truncated=True must say 'truncated' in its reason")
 
     @property
     def unit(self) -> str:
         return UNIT_SCALES[self.printed.unit][1]
 
     def _status(self, computed: float, via: float | None) -> str:
-        """classify, then the two statuses a number's arithmetic alone cannot tell: a wrong method, and a
-        value rounded to the safe side on purpose ("conservative")."""
+        """classify, then what a number's arithmetic alone cannot tell: a wrong method, a last digit cut off
+        instead of rounded ("rounding", when the print is exactly the truncated value), and a value rounded
+        to the safe side on purpose ("conservative")."""
         status = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation, basis=self.basis,
                           via_rounded=via)
         if self.method_wrong:
             return "wrong method"
+        if status in ("misprint", "inconsistent") and self.truncated and (
+                _is_truncation(self.printed, computed) or (via is not None and _is_truncation(self.printed, via))):
+            return "rounding"
         if status in ("misprint", "inconsistent") and self.safe_side and _safe_rounding(self, computed):
             return "conservative"
         return status
@@ -166,6 +175,16 @@ class Claim:
             "computed": computed, "relation": self.relation, "basis": self.basis, "status": status,
             "reason": reason, "consequence": self.consequence, "depends": sorted(seen.read),
         }
+
+
+def _is_truncation(printed: Printed, computed: float) -> bool:
+    """The print is ``computed`` with the digits after its last printed one cut off (toward zero):
+    22.755 -> 22.7 and 11.76 -> 11.7 are; 6.366 -> 6.35 (truncation gives 6.36) and 11 -> 10 are not."""
+    step = 2 * printed.half_unit
+    if step <= 0:
+        return False
+    cut = math.copysign(math.floor(abs(computed) / step + 1e-9) * step, computed)
+    return abs(printed.si - cut) <= 1e-9 * max(step, abs(printed.si))
 
 
 def _safe_rounding(claim: Claim, computed: float) -> bool:

@@ -9,7 +9,7 @@ from ...core import Source
 from . import claims, data
 from .circuit import b_for, factor_a, factor_b, r10_for, supply_worst_case, v_cs_trip
 
-SOURCE = Source(name=data.NAME, title="AN93008 current limiters", parameters=data.PARAMETERS,
+SOURCE = Source(name=data.NAME, title="AN93008 current limiters", parameters=data.PARAMETERS, facts=data.FACTS,
                 equations_module=f"{__name__}.equations",
                 build_claims=claims.build, errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation

@@ -3,10 +3,10 @@ from __future__ import annotations
 
 from ...core import Claim, Printed
 from .circuit import b_for, factor_a, r10_for, supply_worst_case
-from .data import NAME
+from .data import FACTS, NAME
 
 #: BZX79-C8V2 V_Z minimum at 5 mA (datasheet facts: 7.7 to 8.7 V)
-BZX79_VZ_MIN = 7.7
+BZX79_VZ_MIN = FACTS["bzx79_vz"].value[0]
 
 T1, OP, Z = "one_transistor", "supply", "zener"
 
@@ -32,6 +32,12 @@ def _resistor_only(p):
 def _drift_pct(p):
     """The zener drift over the temperature span, as a fraction of the note's 7.7 V."""
     return p["zener_tc"] * p["temp_span"] / VZ_MIN.si
+
+
+def _zener_spread(p):
+    """The BZX79-C8V2's datasheet spread about the nominal V_Z: the larger of its two sides, as a fraction."""
+    low, high = FACTS["bzx79_vz"].value
+    return max(p["v_zener"] - low, high - p["v_zener"]) / p["v_zener"]
 
 
 def build() -> list[Claim]:
@@ -94,11 +100,21 @@ def build() -> list[Claim]:
               reason="7.7 V is the BZX79-C8V2's datasheet minimum (V_Z 7.7 to 8.7 V at 5 mA, datasheet facts), so the "
                      "value is right; the 0.95 x 8.2 V written beside it is 7.79 V: the part spreads +-6.1 %, not +-5 %",
               chapter=Z, consequence="none for the level shift, which the note sized at the right 7.7 V; the +-5 % "
-                                     "written beside it understates the zener's share of the trip tolerance"),
+                                     "written beside it understates the zener's share of the trip tolerance (see "
+                                     "an93008-zener-spread)"),
+        Claim(id="an93008-zener-spread", where=f"{NAME} 2.2 vs BZX79 datasheet",
+              quantity="zener tolerance of the BZX79-C8V2 ('8.2 V +-5 % (BZX79 C 8V2)')", printed=Printed("5", "%"),
+              chapter=Z, compute=_zener_spread, basis="BZX79 datasheet",
+              reason="the datasheet's V_Z limits, 7.7 and 8.7 V at 5 mA, are 8.2 V -6.1 % and +6.1 %; +-5 % is the "
+                     "C series' nominal band, not the part's limits (as AN94002 2.4, an94002-zener-spread)",
+              consequence="the zener's share of the trip tolerance is +-6.1 %, not +-5 % (V_cs is proportional to "
+                           "the zener voltage); with the note's +-2 % drift it is +-8.1 %, not +-7 % (see "
+                           "an93008-zener-share)"),
         Claim(id="an93008-factor-a-zener", where=f"{NAME} 2.2",
               quantity="A for a 2 V shift at the lowest zener voltage",
-              printed=A_ZENER, compute=lambda p: 1 - p["level_shift"] / (p["v_zener"] * (1 - p["zener_tolerance"])),
-              reason="1 - 2 / 7.79 = 0.7433 (1 - 2/7.7 = 0.7403)", chapter=Z),
+              printed=A_ZENER, compute=lambda p: 1 - p["level_shift"] / VZ_MIN.si,
+              reason="1 - 2 V / 7.7 V = 0.7403, with the note's own lowest zener voltage (an93008-vz-min; "
+                     "0.95 x 8.2 = 7.79 V would give 0.7433, also 0.74)", chapter=Z),
         Claim(id="an93008-offset-tol-zener", where=f"{NAME} 2.2", quantity="offset-related tolerance with A = 0.74",
               printed=Printed("12", "%"), compute=lambda p: p["offset"] / (A_ZENER.si * p["v_cs"]),
               reason="9 mV / 74 mV = 12.16 %", chapter=Z),
@@ -107,9 +123,26 @@ def build() -> list[Claim]:
               reason="6.2 mV/K x 25 K = 155 mV", chapter=Z),
         Claim(id="an93008-zener-drift-pct", where=f"{NAME} 2.2", quantity="zener drift relative to 7.7 V",
               printed=Printed("2", "%"), compute=_drift_pct, reason="155 mV / 7.7 V = 2.01 %", chapter=Z),
+        Claim(id="an93008-zener-tc", where=f"{NAME} 2.2 vs BZX79 datasheet",
+              quantity="largest zener temperature coefficient ('max. 6.2 mV/°C')", printed=Printed("6.2", "mV/K"),
+              chapter=Z, compute=lambda p: FACTS["bzx79_tc"].value[1] * p["v_zener"], basis="BZX79 datasheet",
+              reason="BZX79 datasheet: up to +0.08 %/K, 6.56 mV/K at 8.2 V; over 25 C +- 25 C the drift becomes "
+                     "+-164 mV, +-2.13 % of the note's 7.7 V (as AN94002 2.4, an94002-zener-tc)",
+              consequence="the drift term grows from +-2.0 % to +-2.1 %: negligible by itself; with the datasheet's "
+                          "+-6.1 % spread the zener's share is about +-8.2 %"),
         Claim(id="an93008-zener-total", where=f"{NAME} 2.2", quantity="zener tolerance with drift, 5 % part",
               printed=Printed("7", "%"), compute=lambda p: p["zener_tolerance"] + round(_drift_pct(p), 2),
               reason="5 % + 2 %, added linearly", chapter=Z),
+        Claim(id="an93008-zener-share", where=f"{NAME} 2.2 vs BZX79 datasheet",
+              quantity="zener tolerance with drift ('together with a zener diode tolerance of +-5 % ... then "
+                       "+-7 %'), with the part's datasheet spread",
+              printed=Printed("7", "%"), chapter=Z, basis="BZX79 datasheet",
+              compute=lambda p: _zener_spread(p) + _drift_pct(p),
+              reason="the BZX79-C8V2 spreads +-6.10 % (7.7 to 8.7 V), not +-5 %; with the note's drift, 155 mV / "
+                     "7.7 V = 2.01 %, added linearly as the note does: +-8.11 %",
+              consequence="the zener's share of the trip tolerance is about +-8.1 %, not +-7 % (+-8.2 % with the "
+                          "datasheet's 6.56 mV/K), and the note's total becomes 1.12 x 1.081 x 1.05 = +-27 %, not "
+                          "+-26 %; the budget's bigger faults are its resistor term (an93008-resistor-tol)"),
         Claim(id="an93008-total-zener", where=f"{NAME} 2.2", quantity="total tolerance, 1.12 x 1.07 x 1.05",
               printed=Printed("26", "%"), compute=lambda p: 1.12 * 1.07 * 1.05 - 1,
               reason="1.12 x 1.07 x 1.05 = 1.2583",

@@ -2,8 +2,12 @@
 from __future__ import annotations
 
 from ...core import Param, TextErratum
+from ..an94002.data import FACTS as _AN94002_FACTS
 
 NAME = "AN93008"
+
+#: the outside figures AN93008 relies on: the same BZX79-C8V2 as AN94002's figure 3 (datasheet_facts.md)
+FACTS = {k: _AN94002_FACTS[k] for k in ("bzx79_vz", "bzx79_tc")}
 
 PARAMETERS = (
     Param(name="v_supply", default=12.0, unit="V", meaning="supply the limiter is referenced to", low=0.5,

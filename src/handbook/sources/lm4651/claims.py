@@ -103,13 +103,17 @@ def build() -> list[Claim]:
         Claim(id="lm4651-rosc", where=f"{NAME} Example Design", quantity="R_OSC for 125 kHz with R_DLY = 5 k",
               printed=Printed("3.9", "kohm"), compute=lambda p: r_osc_for(p["f_sw"], p["r_dly"]),
               reason="eq 6 gives 4.0 k for R_DLY = 0, and the text adds about 2 k for R_DLY = 5 k: 6.0 k",
-              chapter=OSC, consequence="with R_DLY = 5 k, 3.9 k runs at about 170 kHz by eq 5 and the stated "
-                                       "correction: the LM4652 dissipates about 22.5 W instead of 20.3 W at 125 W, "
-                                       "and on the example's 2.5 K/W heat sink at its 50 C ambient the junction "
-                                       "reaches about 156 C, past its 150 C limit"),
+              chapter=OSC,
+              consequence="with R_DLY = 5 k, 3.9 k runs at 169.5 kHz by eq 5 and the stated correction; by the "
+                          "Example Design's own method (eq 9 with its 350 ns, eq 10, 2 x 0.230 ohm) the LM4652 then "
+                          "dissipates 23.5 W instead of 21.0 W at 125 W, and on the example's 2.5 K/W heat sink "
+                          "(TF package, 0.2 K/W grease) at its 50 C ambient the junction reaches about 160 C instead "
+                          "of 149 C, past its 150 C limit (with the LM4651 table's typical 310 ns: 22.5 W instead of "
+                          "20.3 W, 156 C); fit 6.0 k, or check f_sw on the board"),
         Claim(id="lm4651-hp-corner", where=f"{NAME} DC offset", quantity="input high-pass corner, R1 = 25 k and 1 uF",
               printed=Printed("6.35", "Hz"), compute=lambda p: 1 / (2 * math.pi * R1_OFFSET * C_IN_OFFSET),
-              reason="1 / (2 pi x 25 k x 1 uF) = 6.37 Hz", chapter=EX,
+              reason="1 / (2 pi x 25 k x 1 uF) = 6.366 Hz: rounded 6.37, truncated 6.36; 6.35 is neither "
+                     "(0.25 % low)", chapter=EX,
               consequence="negligible by itself; but R1 is 25 k here, 20 k in the Example Design and 4.7 k in "
                           "figure 1 (see lm4651-t-r1)"),
         Claim(id="lm4651-isckt", where=f"{NAME} Example Design", quantity="current limit with R_SCKT = 100 k",
@@ -118,8 +122,8 @@ def build() -> list[Claim]:
               consequence="the limit is 11 A, not 10 A; 10 A is the limit with no R_SCKT at all"),
         Claim(id="lm4651-cstart", where=f"{NAME} Example Design, eq (2)", quantity="C_START for 1 s",
               printed=Printed("11.7", "uF"), compute=lambda p: p["t_start"] / 8.5e4,
-              reason="1 / 8.5e4 = 11.76 uF (eq 1's 8.4e4 would give 11.9 uF)", chapter=EX,
-              consequence="none: 11.76 truncated to 11.7; the 10 uF fitted starts in 0.84 s"),
+              reason="1 / 8.5e4 = 11.76 uF, truncated to 11.7 instead of rounded to 11.8 (eq 1's 8.4e4 would give "
+                     "11.9 uF); the 10 uF fitted starts in 0.84 s", chapter=EX, truncated=True),
         Claim(id="lm4651-vout-rms", where=f"{NAME} Example Design", quantity="output voltage for 125 W into 4 ohm",
               printed=VOUT, compute=_v_out, reason="sqrt(125 x 4) = 22.36 V", chapter=EX),
         Claim(id="lm4651-gain", where=f"{NAME} Example Design", quantity="closed-loop gain 22.4 / 3", printed=GAIN,

@@ -70,7 +70,8 @@ ERRATA = (
                 "with the 1 uF input capacitor the high-pass corner is 6.4 Hz, 8.0 Hz and 33.9 Hz: the three "
                 "values are three different amplifiers",
                 "figure 1's 4.7 k with 1 uF cuts at 34 Hz, into a subwoofer's band: with 4.7 k use at least "
-                "4.7 uF (6.8 Hz)"),
+                "4.7 uF (7.2 Hz, below the Example Design's 8.0 Hz, which needs 4.26 uF), or 6.8 uF (5.0 Hz) to "
+                "stay below the DC-offset section's 6.4 Hz (5.32 uF)"),
     TextErratum("lm4651-t-frange", f"{NAME}, Features, Oscillator Control, pin 16 and the LM4651 table",
                 "the switching-frequency range is printed four ways: 50 to 200 kHz (Features), 50 to 225 kHz "
                 "(Oscillator Control), 75 to 225 kHz for R_OSC = 15.5 k to 0 (pin 16) and 65 to 200 kHz for "

@@ -23,8 +23,8 @@ def build() -> list[Claim]:
               printed=Printed("22.7", "Hz"), chapter=START,
               compute=lambda p: oscillation_frequency(p["torque_constant"], p["start_current"], p["pole_pairs"],
                                                       p["inertia"]),
-              reason="sqrt(4.5e-3 x 0.48 x 6 / 6.34e-7) / 2 pi = 22.755 Hz, which rounds to 22.8",
-              consequence="none: 22.755 Hz truncated to 22.7 instead of rounded to 22.8 (0.2 %)"),
+              reason="sqrt(4.5e-3 x 0.48 x 6 / 6.34e-7) / 2 pi = 22.755 Hz, truncated to 22.7 instead of rounded "
+                     "to 22.8 (0.2 % low)", truncated=True),
         Claim(id="tda5341-tstart", where=f"{NAME} start", quantity="start period for the 48.4 Hz start frequency",
               printed=Printed("24", "ms"), chapter=START, compute=lambda p: 1 / p["f_start"],
               reason="1 / 48.4 Hz = 20.7 ms; 24 ms is 1 / 41.7 Hz",
