@@ -1,7 +1,10 @@
 """`python -m handbook` from the shell, as a user runs it."""
 import json
+import shutil
 import subprocess
 import sys
+
+import pytest
 
 SI_UNITS = {"F", "ohm", "V", "A", "s", "Hz", "W", "K/W", "1", "1/K", "V/K", "rpm", "F*rpm"}
 
@@ -76,3 +79,86 @@ def test_errata_command():
         assert {"id", "source", "kind", "what", "printed", "computed", "evidence", "consequence"} <= set(r)
     assert {r["source"].split()[0] for r in rows} >= {"AN94002", "AN93008"}
     assert "AN94002" in run("errata", "--source", "AN94002")
+
+
+def _run_any(cols, *args):
+    """stdout, stderr and exit code of `python -m handbook ARGS` in a terminal ``cols`` columns wide."""
+    env = {**__import__("os").environ, "COLUMNS": str(cols)}
+    out = subprocess.run([sys.executable, "-m", "handbook", *args], capture_output=True, text=True, timeout=180, env=env)
+    assert "Traceback" not in out.stderr, out.stderr
+    return out.stdout, out.stderr, out.returncode
+
+
+@pytest.mark.parametrize("cols", [80, 120])
+@pytest.mark.parametrize("command", ["examples", "equations", "errata", "spice"])
+def test_every_line_fits_the_terminal(command, cols):
+    if command == "spice" and shutil.which("ngspice") is None:
+        pytest.skip("ngspice is not installed")
+    text, err, code = _run_any(cols, command)
+    assert code in ((0, 1) if command == "spice" else (0,)), err
+    too_long = [line for line in text.splitlines() if len(line) > cols]
+    assert not too_long, f"{len(too_long)} lines over {cols} columns, e.g. {too_long[0]!r}"
+    assert "…" not in text  # cells wrap, they are not cut
+    # every id stays whole (it is one word, and a column is never narrower than its longest word here)
+    rows = json.loads(_run_any(cols, command, "--json")[0])
+    words = set(text.split())
+    assert {r["id"] for r in rows} <= words
+
+
+def test_errata_source_wraps_instead_of_being_cut():
+    text, err, code = _run_any(80, "errata")
+    assert code == 0, err
+    words = set(text.split())
+    for r in json.loads(run("errata", "--json")):
+        assert set(r["source"].split()) <= words, r["source"]
+
+
+@pytest.mark.parametrize("command, valid", [
+    ("examples", ["exact", "rounding", "bound met", "conservative", "misprint", "inconsistent", "wrong method"]),
+    ("equations", ["agrees", "differs", "empirical"]),
+    ("errata", ["misprint", "inconsistent", "wrong method", "equation", "text"]),
+])
+def test_an_unknown_status_is_a_usage_error(command, valid):
+    text, err, code = _run_any(100, command, "--status", "bogus")
+    assert code == 2 and text == ""
+    assert "bogus" in err and all(v in err for v in valid), err
+    text, err, code = _run_any(100, command, "--status", "bogus", "--json")
+    assert code == 2 and "bogus" in err
+    error = json.loads(text)["error"]
+    assert error["exit"] == 2 and all(v in error["message"] for v in valid)
+    # a valid status in another case still filters
+    text, err, code = _run_any(100, command, "--status", valid[1].upper(), "--json")
+    assert code == 0 and json.loads(text), err
+
+
+def _blocks(text: str, ids) -> dict:
+    """Each row's lines of a text table, joined, by the id that starts it."""
+    blocks, current = {}, None
+    for line in text.splitlines()[2:]:
+        head = line.split(" ", 1)[0]
+        if head in ids:
+            current = head
+            blocks[current] = ""
+        blocks[current] += " " + line
+    return blocks
+
+
+def test_empirical_equations_say_so_and_filter():
+    rows = json.loads(run("equations", "--json"))
+    empirical = {r["id"] for r in rows if r["empirical"]}
+    assert {"lm4651-eq3", "lm4651-eq5", "lm4651-eq9"} <= empirical
+    text, err, code = _run_any(200, "equations")
+    assert code == 0, err
+    blocks = _blocks(text, {r["id"] for r in rows})
+    for r in rows:
+        block = blocks[r["id"]]
+        if r["empirical"]:
+            assert "empirical" in block and "DIFFERS" not in block and " agrees " not in block, block
+            assert ("MISSES" in block) == (not r["agrees"]), block
+        else:
+            assert ("DIFFERS" if not r["agrees"] else "agrees") in block and "empirical:" not in block, block
+    assert "DIFFERS" in blocks["lm4651-eq8"]
+    only = json.loads(_run_any(100, "equations", "--status", "empirical", "--json")[0])
+    assert {r["id"] for r in only} == empirical
+    differs = json.loads(_run_any(100, "equations", "--status", "differs", "--json")[0])
+    assert {r["id"] for r in differs} == {r["id"] for r in rows if not r["agrees"] and not r["empirical"]}

@@ -11,17 +11,52 @@ from .cli_text import fit_table, spec_help, template
 _spec_help = spec_help  # the schema test reads the help through this name
 
 
-def _filtered(rows: list[dict], args, status_of) -> list[dict]:
-    """Rows whose source contains --source (any case) and whose status is --status."""
+class _BadStatus(ValueError):
+    """--status names no status the command knows."""
+
+
+def _filtered(rows: list[dict], args, status_of, statuses) -> list[dict]:
+    """Rows whose source contains --source (any case) and whose status is --status (any case); a --status
+    that is none of ``statuses`` (nor of the rows' own) raises _BadStatus naming the valid ones."""
     if args.source:
         rows = [r for r in rows if args.source.lower() in (r["source"] + " " + r["id"]).lower()]
     if args.status:
-        rows = [r for r in rows if status_of(r) == args.status]
+        valid = list(dict.fromkeys([*statuses, *(status_of(r) for r in rows)]))
+        if args.status.lower() not in valid:
+            raise _BadStatus(f"--status {args.status!r} is not a status of `{args.command}`; "
+                             f"valid: {', '.join(valid)}")
+        rows = [r for r in rows if status_of(r) == args.status.lower()]
     return rows
 
 
+def _usage_error(args, message: str) -> int:
+    """Exit 2 with ``message`` on stderr and, with --json, a JSON error object on stdout (as `design` does)."""
+    print(f"error: {message}", file=sys.stderr)
+    if args.json:
+        print(json.dumps({"error": {"exit": 2, "message": message}}, indent=1))
+    return 2
+
+
+def _equation_status(r: dict) -> str:
+    """'empirical' for a fitted equation (no symbolic check behind it), else 'agrees' or 'differs'."""
+    return "empirical" if r.get("empirical") else "agrees" if r["agrees"] else "differs"
+
+
+def _equation_check(r: dict) -> str:
+    """The equations table's check column: the symbolic check, or for an empirical equation how it fares
+    against the datasheet's own figures."""
+    if r.get("empirical"):
+        return "empirical: reproduces figures" if r["agrees"] else "empirical: MISSES figures"
+    return "agrees" if r["agrees"] else "DIFFERS"
+
+
 def cmd_examples(args) -> int:
-    rows = _filtered(catalog.claims(), args, lambda r: r["status"])
+    from .report.tables import BADGE
+
+    try:
+        rows = _filtered(catalog.claims(), args, lambda r: r["status"], BADGE)
+    except _BadStatus as exc:
+        return _usage_error(args, str(exc))
     if args.json:
         keys = ("id", "source", "quantity", "unit", "printed", "computed", "status", "reason", "relation", "basis")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
@@ -37,20 +72,29 @@ def cmd_examples(args) -> int:
 
 
 def cmd_equations(args) -> int:
-    rows = _filtered(catalog.equation_summaries(), args, lambda r: "agrees" if r["agrees"] else "differs")
+    try:
+        rows = _filtered(catalog.equation_summaries(), args, _equation_status, ("agrees", "differs", "empirical"))
+    except _BadStatus as exc:
+        return _usage_error(args, str(exc))
     if args.json:
         keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "dimensions_ok", "law", "note",
                 "empirical", "fitted_to")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
         return 0
-    table = [[r["id"], r["source"], "agrees" if r["agrees"] else "DIFFERS", "ok" if r["dimensions_ok"] else "ERROR",
+    table = [[r["id"], r["source"], _equation_check(r), "ok" if r["dimensions_ok"] else "ERROR",
               r["note"] or r["title"]] for r in rows]
-    print(fit_table(table, ["id", "source", "symbolic", "dims", "note"], [22, 22, 8, 5]))
+    print(fit_table(table, ["id", "source", "check", "dims", "note"], [22, 22, 12, 5]))
     return 0
 
 
 def cmd_errata(args) -> int:
-    rows = _filtered([{**r, "status": r["kind"]} for r in catalog.errata()], args, lambda r: r["kind"])
+    from .report.tables import ERRATA_KINDS
+
+    try:
+        rows = _filtered([{**r, "status": r["kind"]} for r in catalog.errata()], args, lambda r: r["kind"],
+                         ERRATA_KINDS)
+    except _BadStatus as exc:
+        return _usage_error(args, str(exc))
     keys = ("id", "source", "kind", "what", "printed", "computed", "evidence", "consequence")
     out = [{**{k: r.get(k) for k in keys}, "computed": r.get("recomputed"), "unit": r.get("unit")} for r in rows]
     if args.json:
@@ -58,7 +102,7 @@ def cmd_errata(args) -> int:
         return 0
     table = [[r["id"], r["source"], r["kind"], r["what"] + (f": {r['consequence']}" if r["consequence"] else "")]
              for r in rows]
-    print(fit_table(table, ["id", "source", "kind", "what, and what it costs"], [24, 18, 14]))
+    print(fit_table(table, ["id", "source", "kind", "what, and what it costs"], [24, 20, 14]))
     return 0
 
 
@@ -171,7 +215,7 @@ def cmd_spice(args) -> int:
                           f"{r['rel_diff']:.2%}" if "error" not in r else "—",
                           r.get("error") or (r["verdict"] if r["agrees"] else "DIFFERS") + ": " + r["quantity"]]
                          for r in rows],
-                        ["id", "equation", "SPICE", "difference", "verdict: quantity"], [30, 12, 12, 10]))
+                        ["id", "equation", "SPICE", "diff", "verdict: quantity"], [30, 12, 12, 10]))
     return 0 if all(r["agrees"] for r in rows) else 1
 
 
@@ -194,23 +238,24 @@ def cmd_render(args) -> int:
     return 0
 
 
-def _filters(p) -> None:
+def _filters(p, statuses: str) -> None:
     p.add_argument("--json", action="store_true", help="a JSON list; values in SI base units")
     p.add_argument("--source", metavar="TEXT", help="only entries whose source or id contains TEXT (e.g. AN94002)")
-    p.add_argument("--status", metavar="STATUS", help="only entries with this status (see the book's statuses)")
+    p.add_argument("--status", metavar="STATUS", help=f"only entries with this status, any case: {statuses} "
+                   "(another exits 2, listing the valid ones)")
 
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m handbook", description=__doc__.split(":", 1)[1].strip())
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("examples", help="every printed number: printed, recomputed (in the printed unit), status")
-    _filters(p)
+    _filters(p, "exact, rounding, 'bound met', conservative, misprint, inconsistent, 'wrong method', n/a")
     p.set_defaults(func=cmd_examples)
     p = sub.add_parser("equations", help="every equation: printed and derived forms, agreement")
-    _filters(p)
+    _filters(p, "agrees, differs (derived equations), empirical (fitted to a datasheet's figures)")
     p.set_defaults(func=cmd_equations)
     p = sub.add_parser("errata", help="every erratum: what the source says, what holds, the evidence")
-    _filters(p)
+    _filters(p, "the kind: misprint, inconsistent, 'wrong method', equation, reconstructed, text")
     p.set_defaults(func=cmd_errata)
     p = sub.add_parser("design", help="choose the timing capacitors, the limiter network, the class-D parts and "
                        "the TCA5600 converter's coil",

@@ -2,30 +2,71 @@
 boundaries, never cut mid-word), the spec template, and plain-text help built from the one schema."""
 from __future__ import annotations
 
+import re
 import shutil
 import textwrap
 
 
 def width() -> int:
-    """The terminal's width (80 when it cannot be told, e.g. in a pipe: then $COLUMNS or 100)."""
-    return max(60, shutil.get_terminal_size((100, 24)).columns)
+    """The terminal's width: $COLUMNS, else the terminal's own, else 100 (e.g. in a pipe); at least 40."""
+    return max(40, shutil.get_terminal_size((100, 24)).columns)
+
+
+_GLUE = "\x1f"  # stands for a space that must not break (between a number and its unit) while wrapping
+_NUMBER_UNIT = re.compile(r"(?<=\d) (?=[A-Za-zµΩ%°][A-Za-z/Ω]{0,3}(?![\w/]))")
+
+
+def wrap(text: str, w: int) -> list[str]:
+    """``text`` in lines of at most ``w`` characters, broken at spaces (a number stays with its unit); a
+    word is cut only when it alone is longer than ``w``."""
+    words = _NUMBER_UNIT.sub(_GLUE, str(text)).split(" ")
+    # a number with its unit wider than the column: let them part rather than cut one of them
+    glued = " ".join(word.replace(_GLUE, " ") if len(word) > w else word for word in words)
+    lines = textwrap.wrap(glued, w, break_on_hyphens=False) or [""]
+    return [line.replace(_GLUE, " ") for line in lines]
+
+
+def _widths(columns: list[list[str]], fixed: list[int], total: int) -> list[int]:
+    """Each column's width: the fixed ones at most their given width and no wider than their content, the
+    last one taking what is left. When the terminal is too narrow for that, the widest fixed columns shrink
+    (wrapping at spaces, their longest word still whole) until the last column has a readable width; only a
+    terminal too narrow even for that cuts words."""
+    gap = 2 * (len(columns) - 1)
+    longest_word = [max((len(word) for c in col for word in str(c).split()), default=1) for col in columns]
+    widths = [max(1, min(f, max(len(str(c)) for c in col))) for col, f in zip(columns[:-1], fixed)]
+    floor = [min(w, word) for w, word in zip(widths, longest_word)]
+    last_natural = max(len(str(c)) for c in columns[-1])
+    last = min(last_natural, max(20, total // 3))
+
+    def shrink(lowest: list[int], last_min: int) -> None:
+        while sum(widths) + gap + last_min > total:
+            i = max((i for i in range(len(widths)) if widths[i] > lowest[i]), key=lambda i: widths[i], default=None)
+            if i is None:
+                return
+            widths[i] -= 1
+
+    shrink(floor, last)  # 1. wrap the fixed columns at spaces
+    last = max(min(last_natural, 10), min(last, total - sum(widths) - gap))  # 2. a narrower last column
+    shrink([min(w, 4) for w in floor], last)  # 3. cut long words (ids) as a last resort
+    return widths + [max(1, total - sum(widths) - gap)]
 
 
 def fit_table(rows: list[list[str]], header: list[str], fixed: list[int]) -> str:
-    """Columns of the given widths, the last one taking what is left of the terminal, wrapped."""
-    total = width()
-    last = max(20, total - sum(fixed) - 2 * len(fixed))
+    """A table no wider than the terminal: the columns but the last at most the given widths, the last one
+    taking what is left; every cell wrapped at word boundaries (see ``_widths`` for a narrow terminal)."""
+    rows = [[str(c) for c in r] for r in rows]
+    widths = _widths([list(col) for col in zip(header, *rows)], fixed, width())
 
-    def line(cells: list[str]) -> list[str]:
-        wrapped = textwrap.wrap(cells[-1], last) or [""]
-        first = "  ".join(c.ljust(w) if len(c) <= w else c[: w - 1] + "…" for c, w in zip(cells[:-1], fixed))
-        pad = " " * (sum(fixed) + 2 * len(fixed))
-        return [(first + "  " + wrapped[0]).rstrip()] + [(pad + w).rstrip() for w in wrapped[1:]]
+    def lines(cells: list[str]) -> list[str]:
+        wrapped = [wrap(c, w) for c, w in zip(cells, widths)]
+        height = max(len(w) for w in wrapped)
+        return ["  ".join((w[k] if k < len(w) else "").ljust(n) for w, n in zip(wrapped, widths)).rstrip()
+                for k in range(height)]
 
-    out = line(header)
-    out.append("  ".join("-" * w for w in fixed) + "  " + "-" * min(last, 40))
+    out = lines(header)
+    out.append("  ".join("-" * w for w in widths[:-1]) + "  " + "-" * min(widths[-1], 40))
     for r in rows:
-        out.extend(line(r))
+        out.extend(lines(r))
     return "\n".join(out)
 
 
