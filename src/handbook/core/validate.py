@@ -11,6 +11,44 @@ class InputError(ValueError):
     """Bad input: the message names the field, the value given and the accepted range."""
 
 
+#: SI units shown with an engineering prefix in messages (others as plain numbers: rpm, K, C, A/m^2, ...)
+_PREFIXED = {"F": "F", "A": "A", "V": "V", "Hz": "Hz", "H": "H", "s": "s", "m": "m", "T": "T", "W": "W",
+             "ohm": "Ω", "Ω": "Ω", "J": "J"}
+_PREFIXES = ((1e12, "T"), (1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n"),
+             (1e-12, "p"), (1e-15, "f"))
+
+
+def quantity(value, unit: str = "") -> str:
+    """A value as a message shows it: '50 MHz', '1 kHz', '-1 A', '12 µH' for SI units, '0.05' for a fraction,
+    '1e+06 rpm' for others (the number to 4 significant figures)."""
+    v = float(value)
+    if unit in _PREFIXED and v != 0 and math.isfinite(v):
+        scale, prefix = next(((f, p) for f, p in _PREFIXES if abs(v) >= f * (1 - 5e-5)), _PREFIXES[-1])
+        return f"{v / scale:.4g} {prefix}{_PREFIXED[unit]}"
+    return f"{v:.4g}" + ("" if unit in ("", "1") else f" {_PREFIXED.get(unit, unit)}")
+
+
+def range_text(low: float | None, high: float | None, low_open: bool = False, unit: str = "") -> str:
+    """'from 1 kHz to 1 MHz', '> 0 A and <= 10 A', '<= 5 V': the accepted range with its unit."""
+    if low is not None and high is not None and not low_open:
+        return f"from {quantity(low, unit)} to {quantity(high, unit)}"
+    lo = None if low is None else ("> " if low_open else ">= ") + quantity(low, unit)
+    hi = None if high is None else "<= " + quantity(high, unit)
+    return " and ".join(x for x in (lo, hi) if x) or "(any)"
+
+
+def out_of_range(name: str, value, unit: str, low: float | None, high: float | None, low_open: bool = False,
+                 meaning: str = "") -> InputError | None:
+    """The error for ``value`` outside [low, high] (``low`` excluded with ``low_open``), else None."""
+    v = float(value)
+    if not ((low is not None and (v <= low if low_open else v < low)) or (high is not None and v > high)):
+        return None
+    if unit.startswith("("):  # an annotation, e.g. '(fraction, 5 % = 0.05)': once, after the range
+        meaning, unit = meaning or unit.strip("()"), ""
+    return InputError(f"{name} = {quantity(v, unit)} is out of range: use a value "
+                      f"{range_text(low, high, low_open, unit)}" + (f" ({meaning})" if meaning else ""))
+
+
 def number(name: str, value, *, low: float | None = None, high: float | None = None,
            low_open: bool = False, unit: str = "") -> float:
     """``value`` as a float, or an :class:`InputError` naming ``name`` and the accepted range.
@@ -28,14 +66,9 @@ def number(name: str, value, *, low: float | None = None, high: float | None = N
     v = float(value)
     if not math.isfinite(v):
         raise InputError(f"{name} = {value!r}: expected a finite number")
-    bad_low = low is not None and (v <= low if low_open else v < low)
-    bad_high = high is not None and v > high
-    if bad_low or bad_high:
-        lo = "" if low is None else (f"> {low:g}" if low_open else f">= {low:g}")
-        hi = "" if high is None else f"<= {high:g}"
-        rng = " and ".join(x for x in (lo, hi) if x)
-        raise InputError(f"{name} = {value!r}{(' ' + unit) if unit else ''} is out of range: use a value {rng}"
-                         f"{(' ' + unit) if unit else ''}")
+    error = out_of_range(name, v, unit, low, high, low_open)
+    if error is not None:
+        raise error
     return v
 
 

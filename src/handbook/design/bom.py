@@ -55,15 +55,21 @@ def converter_rows(cv) -> list[tuple]:
     """The TCA5600 converter's coil and sense resistor (the class-D filter already uses L1, L2)."""
     from ..report.tables import eng
 
+    sv = cv.spec
     return [
-        ("L1 (TCA5600)", cv.l1, 0.0, "",
-         f"eq 6: {cv.turns} turns of {cv.wire} on {cv.core_shape} in {cv.core_material}, A_L {eng(cv.a_l, 'H')} "
-         f"(centre gap about {eng(cv.gap, 'm')} without fringing), the smallest core of the candidate set with "
-         f"{cv.saturation_margin:.0%} of saturation left at {eng(cv.i_peak, 'A')} (eq 5); loss "
-         f"{eng(cv.core_loss + cv.winding_loss, 'W')}, rise {cv.temperature_rise:.2g} K"),
-        ("R1 (TCA5600)", cv.r1, 0.01, "",
-         f"eq 6a: V12(H) / I_peak = {cv.spec['v12h']:g} V / {eng(cv.i_peak, 'A')} sets the peak coil current; a "
-         f"lower series value raises it, which the coil's {cv.saturation_margin:.0%} saturation margin must cover"),
+        ("L1 (TCA5600)", cv.l1_nominal, sv["a_l_tolerance"], "",
+         f"eq 6 gives L1 = {eng(cv.l1, 'H')} as the largest inductance (a larger L or peak current runs slower than "
+         f"f_min = {eng(sv['f_min'], 'Hz')} at VCC2 = {eng(sv['v_supply_min'], 'V')}): wound for "
+         f"{eng(cv.l1_nominal, 'H')}, which at +{sv['a_l_tolerance']:.0%} A_L with R1 at its low end still keeps "
+         f"f_min; {cv.turns} turns of {cv.wire} on {cv.core_shape} in {cv.core_material}, A_L {eng(cv.a_l, 'H')} "
+         f"(centre gap about {eng(cv.gap, 'm')} by PyOpenMagnetics' gap model; grind to A_L); "
+         f"{cv.saturation_margin:.0%} of saturation left at {eng(cv.i_peak_max, 'A')}; loss "
+         f"{eng(cv.core_loss + cv.winding_loss, 'W')}, rise {cv.temperature_rise:.2g} K; binds: {cv.binding}"),
+        ("R1 (TCA5600)", cv.r1_part, sv["r1_tolerance"], sv["r1_series"],
+         f"eq 6a: V12(H) / I_peak = {sv['v12h']:g} V / {eng(cv.i_peak, 'A')} = {eng(cv.r1, 'Ω')}; the "
+         f"{sv['r1_series']} value at or below {eng(cv.r1 / (1 + sv['r1_tolerance']), 'Ω')} so that at "
+         f"+{sv['r1_tolerance']:.0%} the peak current still reaches eq 5's (the load it carries is proportional "
+         f"to it); at -{sv['r1_tolerance']:.0%} it is {eng(cv.i_peak_max, 'A')}, which the coil holds"),
     ]
 
 

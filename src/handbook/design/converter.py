@@ -9,19 +9,35 @@ conduction; every lighter load lets the regulator's feedback stop the converter 
 Operating point: eq 1 to 6a by the source's own functions (:mod:`handbook.sources.tca5600.circuit`):
 alpha, t1, t2, I_peak, L1 and R1.
 
+Parts and their tolerances. The peak current is V12(H)/R1 and the load the converter carries is
+I_peak/2 x V_L-/(V_L- + V_L+) whatever the inductance, so R1 is the series value (``r1_series``, E96 by
+default) at or below R1/(1 + ``r1_tolerance``): at its high end it still gives eq 5's I_peak. At its low end
+the peak current is I_peak,max = V12(H) / (R1 (1 - tol)). The frequency 1/(L I_peak (1/V_L- + 1/V_L+)) falls
+as L and I_peak grow, so eq 6's L1 is a largest inductance: the coil is wound for L1 I_peak / I_peak,max /
+(1 + ``a_l_tolerance``), which at +tolerance with I_peak,max still runs at f_min at the lowest VCC2. The
+switching frequency is reported over VCC2 = ``v_supply_min`` .. ``v_supply_max`` at every corner (it peaks
+where V_L- = V_L+ and falls towards both ends: at the highest VCC2 it can fall into the audio band).
+
 Coil. For every candidate core (shape and material from PyOpenMagnetics' database, shipped as
-:mod:`.converter_cores`): the fewest whole turns that keep the peak flux density at the core's narrowest
-section ``saturation_margin_min`` below the material's saturation at 100 C (N >= L1 I_peak / (B_max
-A_min)) and leave a centre-leg gap of at least :data:`GAP_MIN`; the gap for L1 without fringing, lg =
-mu0 N^2 A_e / L1 - l_e / mu_i (fringing adds inductance: the gap is ground to the A_L = L1 / N^2 reported);
-the thickest wire that fits the bobbin with ``fill_factor`` (least copper loss) and carries the rms
-current within ``current_density_max``; the core loss by the improved generalised Steinmetz equation
-(iGSE) for the triangular flux of figure 14 with the material's coefficients; the copper loss I_rms^2
-R_dc at 100 C; and the temperature rise from the core's thermal resistance. The choice is the candidate
-of least effective volume that meets the saturation margin, the fit and ``temperature_rise_max`` (ties:
-the least loss). The candidate set is finite and every candidate is evaluated exactly, so enumeration
-is the exact optimum: no solver is needed and none is used. The frequency trade-off (higher f_min: a
-smaller L1 and core, more core loss per volume) is shown as a sweep over f_min in the design chapter.
+:mod:`.converter_cores`): the reluctance is the core's l_e / (mu0 mu_i A_e) in series with PyOpenMagnetics'
+own gap model (Zhang's reluctance of the ground centre gap, with fringing, and the outer legs' residual gaps),
+tabulated over the gap's length; the gap for the nominal inductance is read from that table. Fringing makes
+the centre gap's reluctance smaller than lg / (mu0 A_centre), so a gap worked out without it over the centre
+column would give too much inductance; worked out over A_e (larger than the centre column of EP and EFD
+cores) it gives too little. The turns are the fewest whole ones that keep the peak flux L_max I_peak,max / N
+at the narrowest section (the least of the centre column, the outer legs together and the database's
+minimum area) ``saturation_margin_min`` below the material's saturation at ``t_ambient`` + the coil's own
+rise (linear between the material's 25 C and 100 C figures, extended beyond) and leave a centre gap of at
+least :data:`GAP_MIN`; the thickest wire that fits the bobbin with ``fill_factor`` (least copper loss); the
+core loss by the improved generalised Steinmetz equation (iGSE) for the triangular flux of figure 14 at
+the largest flux swing, the largest over the supply range at full load; the copper loss I_rms^2 R_dc at
+``t_ambient`` + ``temperature_rise_max``; and the temperature rise from the core's thermal resistance. The
+choice is the candidate of least effective volume that meets the saturation margin, the fit, the gap and
+``temperature_rise_max`` (ties: the least loss); ``binding`` names the limit that rules out the next smaller
+core. The current density is advisory (a warning above ``current_density_max``): the temperature rise,
+which counts the copper loss, decides. The candidate set is finite and every candidate is evaluated exactly,
+so enumeration is the exact optimum: no solver is needed and none is used. The frequency trade-off (higher
+f_min: a smaller L1 and core, more core loss per volume) is shown as a sweep over f_min in the design chapter.
 """
 from __future__ import annotations
 
@@ -29,21 +45,39 @@ import math
 from dataclasses import dataclass
 
 from ..core import InputError
+from ..core import series as eseries
 from ..sources.tca5600 import circuit as tca5600
+from ..sources.tca5600 import data as tca5600_data
 from . import converter_cores
-from .common import Result, completed
+from .common import Result, completed, ordered
 from .solvers import Infeasible
 
 TABLE = "converter"
 MU0 = 4e-7 * math.pi
-#: the smallest centre-leg gap designed: assumption, a ground gap holds about +-10 um, so 50 um keeps
-#: A_L within about +-20 %
+#: the smallest centre gap designed (PyOpenMagnetics' gap model): assumption, a ground gap holds about
+#: +-5 um, so from 50 um up the gap moves A_L by at most +-10 % (the ``a_l_tolerance`` default)
 GAP_MIN = 50e-6
 #: the temperature of the Steinmetz coefficients' factor ct0 - ct1 T + ct2 T^2 (C): 25 C, where the MnZn
 #: power ferrites of the candidate set lose most across 25..100 C (conservative)
 T_LOSS = 25.0
-#: copper resistivity (ohm m) and its temperature coefficient (1/K), for the skin depth only
+#: copper resistivity at 20 C (ohm m) and its temperature coefficient (1/K)
 RHO_CU, ALPHA_CU = 1.72e-8, 0.00393
+#: the temperature of the shipped wire resistances (C)
+T_WIRE_TABLE = converter_cores.T_HOT
+#: the upper end of the audio band (Hz): the excerpt's own example of a frequency above it
+AUDIO_BAND = 20e3
+#: assumption: the TCA5600's internal switch carries the peak current the excerpt's own R1 = 0.68 ohm sets at
+#: the assumed V12(H) = 0.4 V, about 0.59 A (no public maximum ratings were found): a warning above it
+SWITCH_I_MAX = 0.4 / tca5600_data.APPLICATION["r1"]
+#: assumption: the self-capacitance of a small multi-layer bobbin winding (measure the ring once the coil
+#: current reaches zero); a warning when the self-resonance is below ten times the highest switching frequency
+C_SELF = 10e-12
+#: turns above which the winding is impractical by hand and its self-capacitance grows: a warning
+TURNS_WARN = 300
+#: supply points over which the core loss and the audio band are evaluated
+SUPPLY_POINTS = 41
+#: the lowest Iout2 the exit-3 search tries (A): below it no TCA5600 board is sensible
+I_OUT_FLOOR = 1e-6
 
 
 @dataclass(frozen=True)
@@ -54,18 +88,21 @@ class Coil:
     material: str
     ve: float
     turns: int
-    gap: float
+    gap: float | None
     a_l: float
-    b_peak: float  # at the effective area (the loss figure)
+    b_peak: float  # over the centre column, at the highest peak current
     b_peak_min_area: float  # at the narrowest section (the saturation figure)
+    b_sat: float  # the material's saturation at t_ambient + the rise
     saturation_margin: float
     wire: str | None
     wire_diameter: float | None
+    current_density: float | None
     r_dc: float | None
     core_loss: float | None
     winding_loss: float | None
     temperature_rise: float | None
     fails: str  # "" when it meets everything, else why not
+    limits: tuple = ()  # the limits it fails: "saturation", "bobbin", "gap", "temperature rise"
 
     @property
     def ok(self) -> bool:
@@ -84,6 +121,13 @@ class ConverterResult(Result):
     i_peak: float
     l1: float
     r1: float
+    r1_part: float
+    i_peak_min: float
+    i_peak_max: float
+    l1_nominal: float
+    l1_max: float
+    f_sw_min: float
+    f_sw_max: float
     vl_plus: float
     vl_minus: float
     i_rms: float
@@ -98,6 +142,7 @@ class ConverterResult(Result):
     winding_loss: float
     temperature_rise: float
     saturation_margin: float
+    binding: str
     coil: Coil
     candidates: tuple  # every candidate Coil, in the order of the choice (smallest first)
     next_smaller: Coil | None  # the largest candidate smaller than the choice, and why it fails
@@ -122,13 +167,55 @@ def checked(spec: dict | None) -> dict:
     if s["v_supply_min"] <= drops:
         raise InputError(f"converter.v_supply_min = {s['v_supply_min']:g} V must be above v_ce_sat + v12h = "
                          f"{drops:g} V: the coil needs a voltage to charge (eq 2, V_L- > 0)")
+    ordered(TABLE, "v_supply_min", "v_supply_max", s, "V", strict=False)
     return s
 
 
+def v_top(s: dict) -> float:
+    """The VCC2 at which the dump voltage V_L+ vanishes (eq 1): above it the converter need not switch."""
+    return s["v_out"] + s["v_regulator_drop"] + s["v_f"]
+
+
+def coil_voltages(s: dict, vcc: float) -> tuple[float, float]:
+    """Eq 1 and 2 at supply ``vcc``: (V_L+, V_L-)."""
+    return v_top(s) - vcc, vcc - s["v_ce_sat"] - s["v12h"]
+
+
+def frequency(s: dict, vcc: float, inductance: float, i_peak: float) -> float:
+    """The full-load switching frequency 1/(t1 + t2) = 1/(L I_peak (1/V_L- + 1/V_L+)) at supply ``vcc``
+    (0 where V_L+ has vanished: the dump never ends)."""
+    vl_plus, vl_minus = coil_voltages(s, vcc)
+    if vl_plus <= 0:
+        return 0.0
+    return 1 / (inductance * i_peak * (1 / vl_minus + 1 / vl_plus))
+
+
+def supplies(s: dict, n: int = SUPPLY_POINTS) -> list[float]:
+    """VCC2 from v_supply_min to v_supply_max (stopping just short of where V_L+ vanishes)."""
+    lo, hi = s["v_supply_min"], min(s["v_supply_max"], v_top(s) * (1 - 1e-6))
+    hi = max(hi, lo)
+    return [lo + (hi - lo) * k / (n - 1) for k in range(n)] if hi > lo else [lo]
+
+
 def operating_point(s: dict) -> dict:
-    """Eq 1 to 6a (the source's functions) and the triangle's rms current I_peak / sqrt(3)."""
+    """Eq 1 to 6a (the source's functions), R1 fitted from its series, the peak currents at R1's tolerance,
+    the inductance to wind (A_L's tolerance), the frequency range over the supply, and the triangle's rms
+    current at the highest peak current, I_peak,max / sqrt(3)."""
     op = tca5600.design(source_params(s))
-    return {**op, "i_rms": op["i_peak"] / math.sqrt(3), "duty": op["t1"] * s["f_min"]}
+    tol_r, tol_l = s["r1_tolerance"], s["a_l_tolerance"]
+    r1_part = eseries.at_most(s["r1_series"], op["r1"] / (1 + tol_r))
+    i_min, i_max = s["v12h"] / (r1_part * (1 + tol_r)), s["v12h"] / (r1_part * (1 - tol_r))
+    l_max = op["l1"] * op["i_peak"] / i_max  # at I_peak,max it still runs at f_min at v_supply_min
+    l_nom = l_max / (1 + tol_l)
+    l_min = l_nom * (1 - tol_l)
+    f_slow = [frequency(s, v, l_max, i_max) for v in supplies(s)]
+    if s["v_supply_max"] >= v_top(s):
+        f_slow.append(0.0)
+    v_peak = min(max((v_top(s) + s["v_ce_sat"] + s["v12h"]) / 2, s["v_supply_min"]), max(supplies(s)))
+    f_fast = max(frequency(s, v, l_min, i_min) for v in (*supplies(s), v_peak))
+    return {**op, "r1_part": r1_part, "i_peak_min": i_min, "i_peak_max": i_max, "l1_max": l_max, "l1_nominal": l_nom,
+            "l1_min": l_min, "f_sw_min": min(f_slow), "f_sw_max": f_fast, "i_rms": i_max / math.sqrt(3),
+            "duty": op["t1"] * s["f_min"]}
 
 
 def steinmetz_range(material: dict, f: float) -> tuple[dict, bool]:
@@ -154,47 +241,117 @@ def igse_density(material: dict, delta_b: float, f: float, duty: float) -> float
     return k_i * delta_b ** b * f ** a * (duty ** (1 - a) + (1 - duty) ** (1 - a)) * temp
 
 
-def wind(shape: dict, material: dict, s: dict, op: dict) -> tuple[int, float, float]:
-    """(turns, gap, A_L): the fewest whole turns that keep B at the narrowest section below the margin and
-    leave a gap of at least GAP_MIN; the gap for L1 without fringing."""
-    l1, i_pk = op["l1"], op["i_peak"]
-    b_max = (1 - s["saturation_margin_min"]) * material["b_sat_hot"]
-    n_sat = l1 * i_pk / (b_max * shape["a_min"])
-    n_gap = math.sqrt(l1 * (GAP_MIN + shape["le"] / material["mu_i"]) / (MU0 * shape["ae"]))
-    n = max(1, math.ceil(max(n_sat, n_gap) * (1 - 1e-12)))
-    gap = MU0 * n * n * shape["ae"] / l1 - shape["le"] / material["mu_i"]
-    return n, gap, l1 / (n * n)
+def b_sat(material: dict, temperature: float) -> float:
+    """The material's saturation flux density at ``temperature`` (C): linear through its 25 C and 100 C
+    figures (PyOpenMagnetics gives those two), extended beyond them (never below 1 mT: far above the Curie
+    temperature the figure means only "saturated")."""
+    t0, t1 = converter_cores.T_ROOM, converter_cores.T_HOT
+    b0, b1 = material["b_sat_room"], material["b_sat_hot"]
+    return max(b0 + (b1 - b0) * (temperature - t0) / (t1 - t0), 1e-3)
+
+
+def core_reluctance(shape: dict, material: dict) -> float:
+    return shape["le"] / (MU0 * material["mu_i"] * shape["ae"])
+
+
+def gap_reluctance(shape: dict, gap: float) -> float:
+    """PyOpenMagnetics' reluctance of the gaps with a centre gap ``gap`` (log-log interpolation of the table)."""
+    xs, ys = shape["gap_lengths"], shape["gap_reluctance"]
+    k = min(max(1, next((i for i, x in enumerate(xs) if x >= gap), len(xs) - 1)), len(xs) - 1)
+    w = math.log(gap / xs[k - 1]) / math.log(xs[k] / xs[k - 1])
+    return math.exp(math.log(ys[k - 1]) + w * (math.log(ys[k]) - math.log(ys[k - 1])))
+
+
+def gap_for(shape: dict, reluctance: float) -> float | None:
+    """The centre gap whose gaps' reluctance is ``reluctance`` (the table inverted), None beyond the table."""
+    xs, ys = shape["gap_lengths"], shape["gap_reluctance"]
+    if reluctance > ys[-1]:
+        return None
+    k = min(max(1, next((i for i, y in enumerate(ys) if y >= reluctance), len(ys) - 1)), len(ys) - 1)
+    w = math.log(reluctance / ys[k - 1]) / math.log(ys[k] / ys[k - 1])
+    return math.exp(math.log(xs[k - 1]) + w * (math.log(xs[k]) - math.log(xs[k - 1])))
+
+
+def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tuple[float, list[float]]:
+    """The iGSE core loss (W) at the largest flux swing (L_max, I_peak,max), the largest over the supply range
+    at full load, and the frequencies it was evaluated at."""
+    delta_b = op["l1_max"] * op["i_peak_max"] / (turns * shape["ae"])
+    worst, freqs = 0.0, []
+    for v in supplies(s, 9):
+        vl_plus, vl_minus = coil_voltages(s, v)
+        f = frequency(s, v, op["l1_max"], op["i_peak_max"])
+        if f <= 0:
+            continue
+        freqs.append(f)
+        duty = vl_plus / (vl_plus + vl_minus)  # t1 / (t1 + t2)
+        worst = max(worst, igse_density(material, delta_b, f, duty) * shape["ve"])
+    return worst, freqs
 
 
 def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | None = None) -> Coil:
     """One candidate core, wound and costed (see the module's description)."""
     table = table or converter_cores.load()
     shape, material = table["shapes"][shape_name], table["materials"][material_name]
-    n, gap, a_l = wind(shape, material, s, op)
-    flux = op["l1"] * op["i_peak"] / n
-    b_eff, b_min_area = flux / shape["ae"], flux / shape["a_min"]
-    margin = 1 - b_min_area / material["b_sat_hot"]
-    base = dict(shape=shape_name, material=material_name, ve=shape["ve"], turns=n, gap=gap, a_l=a_l, b_peak=b_eff,
-                b_peak_min_area=b_min_area, saturation_margin=margin)
-    a_cu_min = op["i_rms"] / s["current_density_max"]
+    l_nom, flux_n = op["l1_nominal"], op["l1_max"] * op["i_peak_max"]  # flux_n = N x peak flux
+    r_core = core_reluctance(shape, material)
+    n_gap = math.sqrt(l_nom * (r_core + gap_reluctance(shape, GAP_MIN)))
+    b_allowed = lambda t: (1 - s["saturation_margin_min"]) * b_sat(material, t)  # noqa: E731
+    n_for = lambda t: math.ceil(max(n_gap, flux_n / (b_allowed(t) * shape["a_min"])) * (1 - 1e-12))  # noqa: E731
+    n_hi = n_for(s["t_ambient"] + s["temperature_rise_max"])  # enough at the hottest the rise allows
+    # the fewest turns that hold the margin at the coil's own temperature: from the ambient's count up, each
+    # step to the count the last one's temperature asks for (the count only grows; at most n_hi)
+    n = max(1, n_for(s["t_ambient"]))
+    for _ in range(50):
+        wound = wind(shape_name, material_name, s, op, n, table)
+        if "saturation" not in wound.limits or n >= n_hi:
+            return wound
+        n = min(max(n + 1, n_for(s["t_ambient"] + wound.temperature_rise)), n_hi)
+    return wound
+
+
+def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: dict | None = None) -> Coil:
+    """The candidate wound with ``n`` turns: gap, flux, wire, losses, rise, and the limits it fails."""
+    table = table or converter_cores.load()
+    shape, material = table["shapes"][shape_name], table["materials"][material_name]
+    r_core = core_reluctance(shape, material)
+    t_cu = s["t_ambient"] + s["temperature_rise_max"]  # copper at the hottest the rise allows
+    copper = (1 + ALPHA_CU * (t_cu - 20)) / (1 + ALPHA_CU * (T_WIRE_TABLE - 20))
+    gap = gap_for(shape, n * n / op["l1_nominal"] - r_core)
+    flux = op["l1_max"] * op["i_peak_max"] / n
+    b_centre, b_narrow = flux / shape["a_centre"], flux / shape["a_min"]
+    fails, limits = [], []
+    if gap is None:
+        fails.append(f"the gap for {n} turns is longer than {shape['gap_lengths'][-1] * 1e3:.3g} mm")
+        limits.append("gap")
+    elif gap < GAP_MIN * (1 - 1e-6):
+        fails.append(f"the gap for {n} turns is {gap * 1e6:.3g} um, below {GAP_MIN * 1e6:g} um")
+        limits.append("gap")
     fitting = [w for w in table["wires"] if n * w["d_outer"] ** 2 <= s["fill_factor"] * shape["window_area"]]
+    base = dict(shape=shape_name, material=material_name, ve=shape["ve"], turns=n, gap=gap, a_l=op["l1_nominal"] / n ** 2,
+                b_peak=b_centre, b_peak_min_area=b_narrow)
     if not fitting:
-        return Coil(**base, wire=None, wire_diameter=None, r_dc=None, core_loss=None, winding_loss=None,
-                    temperature_rise=None, fails=f"{n} turns of even the thinnest wire do not fit the bobbin")
+        sat = b_sat(material, s["t_ambient"])
+        return Coil(**base, b_sat=sat, saturation_margin=1 - b_narrow / sat, wire=None, wire_diameter=None,
+                    current_density=None, r_dc=None, core_loss=None, winding_loss=None, temperature_rise=None,
+                    fails="; ".join([*fails, f"{n} turns of even the thinnest wire do not fit the bobbin"]),
+                    limits=(*limits, "bobbin"))
     wire = fitting[-1]
-    r_dc = n * shape["mlt"] * wire["r_per_m_hot"]
+    r_dc = n * shape["mlt"] * wire["r_per_m_hot"] * copper
     p_cu = op["i_rms"] ** 2 * r_dc
-    p_core = igse_density(material, b_eff, s["f_min"], op["duty"]) * shape["ve"]
+    p_core, _ = core_loss(material, shape, s, op, n)
     rise = shape["r_th"] * (p_cu + p_core)
-    fails = []
-    if math.pi * wire["d_cu"] ** 2 / 4 < a_cu_min:
-        fails.append(f"the thickest wire that fits ({wire['d_cu'] * 1e3:g} mm) carries "
-                     f"{op['i_rms'] / (math.pi * wire['d_cu'] ** 2 / 4) / 1e6:.3g} A/mm^2, above "
-                     f"{s['current_density_max'] / 1e6:g} A/mm^2")
+    sat = b_sat(material, s["t_ambient"] + rise)
+    margin = 1 - b_narrow / sat
+    if margin < s["saturation_margin_min"] * (1 - 1e-9):
+        fails.append(f"{margin:.1%} of saturation left at {s['t_ambient'] + rise:.3g} C, below "
+                     f"{s['saturation_margin_min']:.0%}")
+        limits.append("saturation")
     if rise > s["temperature_rise_max"]:
         fails.append(f"it rises {rise:.3g} K, above {s['temperature_rise_max']:g} K")
-    return Coil(**base, wire=wire["name"], wire_diameter=wire["d_cu"], r_dc=r_dc, core_loss=p_core,
-                winding_loss=p_cu, temperature_rise=rise, fails="; ".join(fails))
+        limits.append("temperature rise")
+    return Coil(**base, b_sat=sat, saturation_margin=margin, wire=wire["name"], wire_diameter=wire["d_cu"],
+                current_density=op["i_rms"] / (math.pi * wire["d_cu"] ** 2 / 4), r_dc=r_dc, core_loss=p_core,
+                winding_loss=p_cu, temperature_rise=rise, fails="; ".join(fails), limits=tuple(limits))
 
 
 def candidates(s: dict, op: dict) -> list[Coil]:
@@ -211,19 +368,43 @@ def choose(s: dict) -> tuple[dict, list[Coil], Coil | None]:
 
 
 def _feasible(s: dict) -> bool:
-    return choose(s)[2] is not None
+    op = operating_point(s)
+    table = converter_cores.load()
+    return any(coil(sh, m, s, op, table).ok for sh in table["shapes"] for m in table["materials"])
 
 
-def _largest_true(pred, low: float, high: float, steps: int = 40) -> float | None:
-    """Largest x in [low, high] with pred(x) true, for a pred true below a threshold (bisection)."""
-    if not pred(low):
-        return None
-    if pred(high):
-        return high
+def _bisect(pred, good: float, bad: float, steps: int = 14) -> float:
+    """Between a ``good`` x (pred true) and a ``bad`` one, the good end of the last bracket (geometric)."""
     for _ in range(steps):
-        mid = math.sqrt(low * high)
-        low, high = (mid, high) if pred(mid) else (low, mid)
-    return low
+        mid = math.sqrt(good * bad)
+        good, bad = (mid, bad) if pred(mid) else (good, mid)
+    return good
+
+
+def _current_that_works(s: dict) -> float | None:
+    """The largest Iout2 at or below the spec's that some candidate meets: a downward scan (halving) from
+    i_out to :data:`I_OUT_FLOOR` for a feasible point, then bisection up to the last infeasible one."""
+    pred = lambda i: _feasible({**s, "i_out": i})  # noqa: E731
+    bad = s["i_out"]
+    good = bad / 2
+    while good >= I_OUT_FLOOR and not pred(good):
+        bad, good = good, good / 2
+    return _bisect(pred, good, bad) if good >= I_OUT_FLOOR else None
+
+
+def _frequency_that_works(s: dict) -> float | None:
+    """The lowest f_min above the spec's, up to the schema's highest, that some candidate meets: an upward
+    scan (doubling) for a feasible point, then bisection down to the last infeasible one."""
+    from .schema import TABLES
+
+    f_high = next(p.high for p in TABLES[TABLE] if p.name == "f_min")
+    pred = lambda f: _feasible({**s, "f_min": f})  # noqa: E731
+    bad, good = s["f_min"], min(2 * s["f_min"], f_high)
+    while not pred(good):
+        if good >= f_high:
+            return None
+        bad, good = good, min(2 * good, f_high)
+    return _bisect(pred, good, bad)
 
 
 def infeasible(s: dict, every: list[Coil]) -> Infeasible:
@@ -231,12 +412,8 @@ def infeasible(s: dict, every: list[Coil]) -> Infeasible:
     and which candidate comes nearest (the way to a larger core family)."""
     from ..report.tables import eng
 
-    i_ok = _largest_true(lambda i: _feasible({**s, "i_out": i}), 1e-6, s["i_out"])
-    f_ok = None
-    for f in (s["f_min"] * 1.25 ** k for k in range(1, 41)):
-        if f <= 1e7 and _feasible({**s, "f_min": f}):
-            f_ok = f
-            break
+    i_ok = _current_that_works(s)
+    f_ok = _frequency_that_works(s)
     largest = max(every, key=lambda c: (c.ve, -c.loss))
     why = largest.fails
     parts = [f"no core of the candidate set (P 9/5 .. P 26/16, RM 4 .. RM 10, EP 7 .. EP 20, E 13 .. E 25, "
@@ -252,21 +429,71 @@ def infeasible(s: dict, every: list[Coil]) -> Infeasible:
                                                  "largest_core_fails": why})
 
 
+def binding(every: list[Coil], chosen: Coil) -> str:
+    """The limit that rules out the next smaller core (the one just below the choice)."""
+    smaller = [c for c in every if c.ve < chosen.ve * (1 - 1e-9)]
+    if not smaller:
+        return "none: the smallest candidate core passes"
+    ve = smaller[-1].ve
+    nearest = [c for c in smaller if c.ve == ve]
+    limits = sorted({lim for c in nearest for lim in c.limits})
+    return (f"{' and '.join(limits)} (the next smaller core, {nearest[0].shape}: "
+            + "; ".join(f"in {c.material} {c.fails}" for c in nearest) + ")")
+
+
+def audio_band(s: dict, op: dict) -> tuple[float, float] | None:
+    """The VCC2 span over which the full-load frequency at the slow corner lies below :data:`AUDIO_BAND`."""
+    points = [v for v in supplies(s, 401) if frequency(s, v, op["l1_max"], op["i_peak_max"]) < AUDIO_BAND]
+    if s["v_supply_max"] >= v_top(s):
+        points.append(s["v_supply_max"])
+    return (min(points), max(points)) if points else None
+
+
 def warnings(s: dict, op: dict, c: Coil) -> list[str]:
+    from ..report.tables import eng
+
     table = converter_cores.load()
     out = []
-    if s["f_min"] < 20e3:
-        out.append(f"f_min = {s['f_min'] / 1e3:g} kHz lies in the audio band: the coil may be heard (the excerpt: "
-                   "above the audio band, e.g. 20 kHz)")
-    _, inside = steinmetz_range(table["materials"][c.material], s["f_min"])
-    if not inside:
-        rng = table["materials"][c.material]["steinmetz"]
-        out.append(f"core loss extrapolated: {c.material}'s Steinmetz fit spans {rng[0]['f_low'] / 1e3:g} to "
-                   f"{rng[-1]['f_high'] / 1e3:g} kHz, f_min = {s['f_min'] / 1e3:g} kHz")
-    skin = math.sqrt(RHO_CU * (1 + ALPHA_CU * 80) / (math.pi * s["f_min"] * MU0))
+    if s["v_supply_max"] >= v_top(s):
+        out.append(f"at VCC2 = {eng(v_top(s), 'V')} and above (v_supply_max = {eng(s['v_supply_max'], 'V')}) V_L+ "
+                   "vanishes: the coil no longer dumps against a voltage, the frequency falls to zero and VCC2 "
+                   "feeds the regulator through the coil and the rectifier")
+    span = audio_band(s, op)
+    if span is not None:
+        out.append(f"at full load the switching frequency lies in the audio band (below {eng(AUDIO_BAND, 'Hz')}, the "
+                   f"excerpt's example) for VCC2 from {eng(span[0], 'V')} to {eng(span[1], 'V')}, down to "
+                   f"{eng(op['f_sw_min'], 'Hz')}: the coil may be heard (at lighter loads the regulator's feedback "
+                   "pauses it, in bursts slower still); a higher f_min or a lower v_supply_max moves it out")
+    material = table["materials"][c.material]
+    _, freqs = core_loss(material, table["shapes"][c.shape], s, op, c.turns)
+    outside = [f for f in freqs if not steinmetz_range(material, f)[1]]
+    if outside:
+        rng = material["steinmetz"]
+        out.append(f"core loss extrapolated: {c.material}'s Steinmetz fit spans {eng(rng[0]['f_low'], 'Hz')} to "
+                   f"{eng(rng[-1]['f_high'], 'Hz')}, the full-load frequency over the supply range "
+                   f"{eng(min(freqs), 'Hz')} to {eng(max(freqs), 'Hz')}")
+    f_top = max(op["f_sw_max"], 1.0)
+    skin = math.sqrt(RHO_CU * (1 + ALPHA_CU * 80) / (math.pi * f_top * MU0))
     if c.wire_diameter is not None and c.wire_diameter > 2 * skin:
-        out.append(f"wire {c.wire_diameter * 1e3:g} mm is thicker than twice the skin depth at f_min "
-                   f"({skin * 1e3:.3g} mm): the copper loss (I_rms^2 R_dc) is underestimated")
+        out.append(f"wire {eng(c.wire_diameter, 'm')} is thicker than twice the skin depth at "
+                   f"{eng(op['f_sw_max'], 'Hz')} ({eng(skin, 'm')}): the copper loss (I_rms^2 R_dc) is underestimated")
+    if c.current_density is not None and c.current_density > s["current_density_max"]:
+        out.append(f"the wire carries {c.current_density / 1e6:.3g} A/mm^2 rms, above the advisory "
+                   f"{s['current_density_max'] / 1e6:.3g} A/mm^2 (the temperature rise, {c.temperature_rise:.3g} K, "
+                   "counts its loss)")
+    if op["i_peak_max"] > SWITCH_I_MAX:
+        out.append(f"the peak current reaches {eng(op['i_peak_max'], 'A')}, above the "
+                   f"{eng(SWITCH_I_MAX, 'A')} assumed for the TCA5600's internal switch (the excerpt's R1 = "
+                   f"{eng(tca5600_data.APPLICATION['r1'], 'Ω')} at V12(H) = 400 mV; no public maximum ratings): "
+                   "check the switch or use an external one")
+    srf = 1 / (2 * math.pi * math.sqrt(op["l1_max"] * C_SELF))
+    if c.turns > TURNS_WARN or srf < 10 * op["f_sw_max"]:
+        out.append(f"{c.turns} turns, L1 up to {eng(op['l1_max'], 'H')}: with an assumed {eng(C_SELF, 'F')} of "
+                   f"winding capacitance the coil self-resonates near {eng(srf, 'Hz')}"
+                   + (f", below ten times the highest switching frequency ({eng(op['f_sw_max'], 'Hz')})"
+                      if srf < 10 * op["f_sw_max"] else "")
+                   + (f"; more than {TURNS_WARN} turns are impractical to wind" if c.turns > TURNS_WARN else "")
+                   + ": a larger i_out or f_min, or a design outside eq 1 to 6a, suits this spec better")
     return out
 
 
@@ -280,12 +507,14 @@ def design(spec: dict | None = None) -> ConverterResult:
     smaller = [c for c in every if c.ve < chosen.ve * (1 - 1e-9)]
     return ConverterResult(
         spec=s, alpha=op["alpha"], t1=op["t1"], t2=op["t2"], i_peak=op["i_peak"], l1=op["l1"], r1=op["r1"],
+        r1_part=op["r1_part"], i_peak_min=op["i_peak_min"], i_peak_max=op["i_peak_max"], l1_nominal=op["l1_nominal"],
+        l1_max=op["l1_max"], f_sw_min=op["f_sw_min"], f_sw_max=op["f_sw_max"],
         vl_plus=op["vl_plus"], vl_minus=op["vl_minus"], i_rms=op["i_rms"],
         core_shape=chosen.shape, core_material=chosen.material, turns=chosen.turns, gap=chosen.gap, a_l=chosen.a_l,
         wire=chosen.wire, b_peak=chosen.b_peak, core_loss=chosen.core_loss, winding_loss=chosen.winding_loss,
-        temperature_rise=chosen.temperature_rise, saturation_margin=chosen.saturation_margin, coil=chosen,
-        candidates=tuple(every), next_smaller=smaller[-1] if smaller else None,
-        warnings=tuple(warnings(s, op, chosen)))
+        temperature_rise=chosen.temperature_rise, saturation_margin=chosen.saturation_margin,
+        binding=binding(every, chosen), coil=chosen, candidates=tuple(every),
+        next_smaller=smaller[-1] if smaller else None, warnings=tuple(warnings(s, op, chosen)))
 
 
 def sweep(s: dict, frequencies) -> list[dict]:
@@ -298,6 +527,6 @@ def sweep(s: dict, frequencies) -> list[dict]:
             rows.append({"f_min": float(f), "core": None})
             continue
         rows.append({"f_min": float(f), "core": f"{r.core_shape} {r.core_material}", "ve": r.coil.ve, "l1": r.l1,
-                     "turns": r.turns, "core_loss": r.core_loss, "winding_loss": r.winding_loss,
-                     "temperature_rise": r.temperature_rise})
+                     "l1_nominal": r.l1_nominal, "turns": r.turns, "core_loss": r.core_loss,
+                     "winding_loss": r.winding_loss, "temperature_rise": r.temperature_rise})
     return rows

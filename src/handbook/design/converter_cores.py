@@ -10,7 +10,12 @@ time), :func:`build` rebuilds it (``python -m handbook.design.converter_cores`` 
 Candidates: gapped two-piece ferrite sets of the families a small board coil uses (pot cores P, RM, EP,
 E and EFD, from about 5 mm to 26 mm), each in two MnZn power ferrites made for 25 to 200 kHz (Ferroxcube
 3C90, TDK N87), wound with IEC 60317 grade-1 enamelled round copper of 0.05 to 1 mm. Per shape: the
-effective area, length and volume, the narrowest cross-section, the bobbin's winding window, the mean
+effective area, length and volume; the cross-sections the flux passes (PyOpenMagnetics'
+``processedDescription.columns``: the centre column, which carries all the flux and holds the gap, the outer
+legs together, and the database's ``minimumArea``) and the narrowest of them, ``a_min``; PyOpenMagnetics' own
+gap model tabulated over the centre gap's length (``gap_lengths``, ``gap_reluctance``: Zhang's reluctance
+of the ground centre gap, with fringing, in series with the outer legs' 5 um residual gaps in parallel, the
+model ``calculate_inductance_from_number_turns_and_gapping`` uses); the bobbin's winding window, the mean
 length of a turn at the middle of that window, and the thermal resistance PyOpenMagnetics gives the core
 (Maniktala's empirical 53 K/W x (V_e / cm^3)^-0.54). Per material: the saturation flux density at 25 and
 100 C, the initial permeability at 25 C, and the Steinmetz ranges (k, alpha, beta, temperature factors
@@ -22,10 +27,18 @@ from __future__ import annotations
 import functools
 import json
 import math
+from importlib import resources
 from pathlib import Path
 
-#: the shipped table
-PATH = Path(__file__).with_name("converter_cores.json")
+#: the shipped table's name inside the package (pyproject's package-data ships it in the wheel)
+RESOURCE = "converter_cores.json"
+#: the file in a source tree (what :func:`write` rewrites)
+PATH = Path(__file__).with_name(RESOURCE)
+#: the centre gaps tabulated (m): 10 um (twice the 5 um residual gap) to 5 mm, 61 points evenly in log, each
+#: shape's up to half its centre column's height (a longer gap is no small board coil's)
+GAP_GRID = tuple(10e-6 * (5e-3 / 10e-6) ** (k / 60) for k in range(61))
+#: PyOpenMagnetics' gap reluctance model (the one its inductance calculation uses by default)
+GAP_MODEL = "ZHANG"
 
 #: shape families a small board coil of a few hundred uH at a few hundred mA uses, smallest to largest
 SHAPES = ("P 9/5", "P 11/7", "P 14/8", "P 18/11", "P 22/13", "P 26/16",
@@ -41,11 +54,30 @@ WIRE_RANGE = (0.05e-3, 1.0e-3)
 T_HOT, T_ROOM = 100.0, 25.0
 
 
+def _core(pom, name: str, gap: float | None = None) -> dict:
+    gapping = [] if gap is None else [{"type": "subtractive", "length": gap}]
+    return pom.calculate_core_data({"functionalDescription": {
+        "type": "two-piece set", "shape": name, "material": MATERIALS[0], "gapping": gapping, "numberStacks": 1}}, False)
+
+
+def gap_reluctance(pom, name: str, gap: float) -> float:
+    """PyOpenMagnetics' reluctance of every gap of the core with a centre gap ground to ``gap`` (A/Wb):
+    the centre gap in series with the outer legs' residual gaps, those in parallel (Zhang's model)."""
+    gaps = _core(pom, name, gap)["functionalDescription"]["gapping"]
+    centre = sum(pom.calculate_gap_reluctance(g, GAP_MODEL)["reluctance"] for g in gaps if g["type"] != "residual")
+    legs = [pom.calculate_gap_reluctance(g, GAP_MODEL)["reluctance"] for g in gaps if g["type"] == "residual"]
+    return centre + (1 / sum(1 / x for x in legs) if legs else 0.0)
+
+
 def _shape_row(pom, name: str) -> dict:
-    core = pom.calculate_core_data({"functionalDescription": {
-        "type": "two-piece set", "shape": name, "material": MATERIALS[0], "gapping": [], "numberStacks": 1}}, False)
+    core = _core(pom, name)
     proc = core["processedDescription"]
     eff = proc["effectiveParameters"]
+    columns = proc["columns"]
+    a_centre = sum(c["area"] for c in columns if c["type"] == "central")
+    a_legs = sum(c["area"] for c in columns if c["type"] == "lateral")
+    column_height = max(c["height"] for c in columns if c["type"] == "central")
+    gaps = [g for g in GAP_GRID if g <= column_height / 2]
     bobbin = pom.create_simple_bobbin_from_core(core)["processedDescription"]
     window = bobbin["windingWindows"][0]
     # mean turn at the middle of the bobbin's window; the bobbin's column width/depth are half-dimensions
@@ -57,7 +89,9 @@ def _shape_row(pom, name: str) -> dict:
     ambient = 25.0
     r_th = pom.calculate_temperature_from_core_thermal_resistance(core, 1.0) - ambient
     return {"family": name.split()[0], "ae": eff["effectiveArea"], "le": eff["effectiveLength"],
-            "ve": eff["effectiveVolume"], "a_min": eff["minimumArea"],
+            "ve": eff["effectiveVolume"], "a_min": min(eff["minimumArea"], a_centre, a_legs),
+            "a_min_database": eff["minimumArea"], "a_centre": a_centre, "a_legs": a_legs,
+            "gap_lengths": gaps, "gap_reluctance": [gap_reluctance(pom, name, g) for g in gaps],
             "column_shape": bobbin["columnShape"], "column_half_width": a, "column_half_depth": b,
             "window_area": window["area"], "window_width": w, "window_height": window["height"],
             "mlt": mlt, "r_th": r_th, "width": proc["width"], "height": proc["height"], "depth": proc["depth"]}
@@ -109,8 +143,8 @@ def build(shapes=SHAPES, materials=MATERIALS, wires: bool = True) -> dict:
 
 @functools.cache
 def load() -> dict:
-    """The shipped table (read once)."""
-    return json.loads(PATH.read_text())
+    """The shipped table (read once, as package data: it works from an installed wheel too)."""
+    return json.loads(resources.files(__package__).joinpath(RESOURCE).read_text(encoding="utf-8"))
 
 
 def write(path: Path = PATH) -> None:

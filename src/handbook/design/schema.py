@@ -98,12 +98,17 @@ def _converter() -> tuple[Param, ...]:
         Param(name="v_supply_min", default=8.0, unit="V", low=0.5, high=60.0,
               meaning="VCC2 at its lowest (the operating point that sizes the coil)",
               cite="assumption: a 12 V battery at cranking (TCA5600 chapter)"),
+        Param(name="v_supply_max", default=14.4, unit="V", low=0.5, high=60.0,
+              meaning="VCC2 at its highest: the switching frequency is reported (and warned about in the audio "
+                      "band) over v_supply_min .. v_supply_max",
+              cite="assumption: a 12 V lead-acid battery on charge, 14.4 V"),
         Param(name="v_out", default=12.0, unit="V", low=0.5, high=60.0, meaning="Vout2, the programmable "
               "regulator's output", cite="assumption (TCA5600 chapter)"),
         Param(name="i_out", default=0.05, unit="A", high=10.0, **_POS, meaning="Iout2 at its largest",
               cite="assumption (TCA5600 chapter)"),
         Param(name="f_min", default=20e3, unit="Hz", low=1e3, high=1e6,
-              meaning="lowest oscillation frequency, above the audio band",
+              meaning="lowest oscillation frequency at v_supply_min and full load, at every tolerance corner of "
+                      "R1 and A_L (eq 4; above the audio band)",
               cite="TCA5600 excerpt, eq 4: 'chosen above the audio frequency band (e.g. 20 kHz)'"),
         Param(name="v_regulator_drop", default=2.5, unit="V", low=0.0, high=20.0,
               meaning="input-output drop V(pin 9 - pin 8) of the programmable regulator",
@@ -117,20 +122,34 @@ def _converter() -> tuple[Param, ...]:
               meaning="current-sense threshold V12(H) across R1",
               cite="assumption: comparator thresholds of this kind are a few hundred mV (no public "
                    "characteristics)"),
+        Param(name="r1_tolerance", default=0.01, unit="1", **_FRACTION,
+              meaning="tolerance of the sense resistor R1, fraction (in the worst case of the peak current)",
+              cite="assumption: a 1 % thick-film or metal-film chip resistor, the tolerance E96 parts are sold with"),
+        _series("r1_series", "E96", "R1 (E96: 1 % parts in 2 % steps waste at most a step of peak current)"),
+        Param(name="a_l_tolerance", default=0.1, unit="1", **_FRACTION,
+              meaning="tolerance of the gapped core's A_L, fraction: the coil is wound so that L at +tolerance "
+                      "is eq 6's largest L1",
+              cite="assumption: gapped ferrite sets are sold with A_L to +-3 % .. +-10 %; +-10 % for a gap "
+                   "ground to order (about +-5 um on the 50 um smallest gap)"),
         Param(name="saturation_margin_min", default=0.2, unit="1", low=0.0, high=0.9,
-              meaning="least fraction of the core's saturation flux density (at 100 C, at its narrowest section) "
-                      "left at the peak current",
-              cite="assumption: covers R1's tolerance, V12(H)'s spread and the comparator's delay"),
+              meaning="least fraction of the core's saturation flux density (at t_ambient + the coil's rise, at "
+                      "its narrowest section) left at the highest peak current (R1 and A_L at their worst ends)",
+              cite="assumption: covers V12(H)'s spread and the comparator's delay (no public figures for either)"),
+        Param(name="t_ambient", default=85.0, unit="C", low=-40.0, high=125.0,
+              meaning="highest ambient temperature around the coil (saturation and copper are taken at "
+                      "t_ambient + the rise)",
+              cite="assumption: an enclosed automotive or industrial board, 85 C"),
         Param(name="temperature_rise_max", default=40.0, unit="K", high=200.0, **_POS,
               meaning="largest temperature rise of the coil (core and winding losses through the core's thermal "
-                      "resistance)", cite="assumption: 85 C ambient keeps the ferrite below its 125 C-class "
-                                          "bobbin rating"),
+                      "resistance)", cite="assumption: 85 C ambient + 40 K keeps the ferrite and the winding at "
+                                          "or below a 125 C-class bobbin's rating"),
         Param(name="fill_factor", default=0.5, unit="1", high=1.0, **_POS,
               meaning="fraction of the bobbin's winding window the turns may fill, counted as N x (outer "
                       "diameter)^2", cite="assumption: hand or machine layer winding of enamelled round wire"),
         Param(name="current_density_max", default=5e6, unit="A/m^2", high=1e8, **_POS,
-              meaning="largest rms current density in the copper (5 A/mm^2 = 5e6)",
-              cite="assumption: a common limit for small, naturally cooled coils"),
+              meaning="rms current density in the copper above which a warning is given (advisory: the "
+                      "temperature rise decides; 5 A/mm^2 = 5e6)",
+              cite="assumption: a common rule of thumb for small, naturally cooled coils"),
     )
 
 
@@ -326,14 +345,21 @@ OUTPUTS: dict[str, tuple[Output, ...]] = {
         Output("alpha", "1", "time ratio alpha = t1/t2 (eq 3)"), Output("t1", "s", "charging time t1 (eq 4)"),
         Output("t2", "s", "dumping time t2"), Output("i_peak", "A", "peak coil current (eq 5)"),
         Output("l1", "H", "coil inductance L1 (eq 6)"), Output("r1", "ohm", "current-sense resistor R1 (eq 6a)"),
+        Output("r1_part", "ohm", "R1 fitted (series value, R1/(1 + r1_tolerance) or below)"),
+        Output("i_peak_max", "A", "highest peak coil current (R1 at its low end)"),
+        Output("l1_nominal", "H", "inductance wound, nominal (f_min at +a_l_tolerance)"),
+        Output("f_sw_min", "Hz", "lowest full-load frequency, supply range and corners"),
+        Output("f_sw_max", "Hz", "highest full-load frequency, supply range and corners"),
         Output("core_shape", "", "core shape"), Output("core_material", "", "core material"),
-        Output("turns", "", "turns"), Output("gap", "m", "centre-leg gap (no fringing; grind to A_L)"),
-        Output("a_l", "H", "A_L (inductance per turn squared)"), Output("wire", "", "wire"),
-        Output("b_peak", "T", "peak flux density (effective area)"), Output("core_loss", "W", "core loss (iGSE)"),
-        Output("winding_loss", "W", "winding loss (I_rms^2 R_dc at 100 C)"),
+        Output("turns", "", "turns"),
+        Output("gap", "m", "centre-column gap (PyOpenMagnetics' gap model)"),
+        Output("a_l", "H", "A_L (inductance per turn squared, nominal)"), Output("wire", "", "wire"),
+        Output("b_peak", "T", "peak flux density, centre column (highest peak current)"),
+        Output("core_loss", "W", "core loss (iGSE)"),
+        Output("winding_loss", "W", "winding loss (I_rms^2 R_dc, copper at its hottest)"),
         Output("temperature_rise", "K", "temperature rise"),
-        Output("saturation_margin", "%", "saturation margin at the peak current"),
-        Output("warnings", "", "warnings"),
+        Output("saturation_margin", "%", "saturation margin (narrowest section, hot, highest I_peak)"),
+        Output("binding", "", "binding"), Output("warnings", "", "warnings"),
     ),
 }
 

@@ -10,11 +10,14 @@ so an empty file designs the notes' own examples. All values are in SI units.
 from __future__ import annotations
 
 import difflib
+import math
+import numbers
 import tomllib
 from pathlib import Path
 
 from ..core import InputError
 from ..core.source import unknown_key_message
+from ..core.validate import out_of_range
 from . import class_d, commutation, converter, current_limiter
 from .schema import TABLES
 from .solvers import Infeasible
@@ -49,8 +52,19 @@ def parse(data: dict) -> dict:
                 near = difflib.get_close_matches(key, params, n=1)
                 raise InputError(f"unknown key {table}.{key}" + (f": did you mean {table}.{near[0]}?" if near else
                                                                  f": known keys are {', '.join(params)}"))
-            out[table][key] = params[key].check(value, f"{table}.")
+            out[table][key] = _checked(params[key], value, f"{table}.{key}")
     return out
+
+
+def _checked(param, value, name: str):
+    """The schema's check of one value; a number out of range is told with engineering prefixes ('50 MHz',
+    'from 1 kHz to 1 MHz') and the key's meaning."""
+    if (isinstance(value, numbers.Real) and not isinstance(value, bool) and math.isfinite(value)
+            and not param.choices and not isinstance(param.default, str)):
+        error = out_of_range(name, value, param.unit, param.low, param.high, param.low_open, param.meaning)
+        if error is not None:
+            raise error
+    return param.check(value, name[: -len(param.name)])
 
 
 def load(path: str | Path) -> dict:

@@ -14,7 +14,7 @@ def coil_voltages(p: dict) -> tuple[float, float]:
     vl_plus = p["v_out2"] + p["regulator_drop"] + p["v_f"] - p["v_cc2_min"]
     vl_minus = p["v_cc2_min"] - p["vce_sat"] - p["v12h"]
     if vl_plus <= 0 or vl_minus <= 0:
-        raise InputError(f"no flyback operation: V_L+ = {vl_plus:.3g} V and V_L- = {vl_minus:.3g} V must both be "
+        raise InputError(f"no boost operation: V_L+ = {vl_plus:.3g} V and V_L- = {vl_minus:.3g} V must both be "
                          f"positive (the output side must sit above the supply, the supply above the switch drops)")
     return vl_plus, vl_minus
 
