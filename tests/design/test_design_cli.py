@@ -112,3 +112,6 @@ def test_help_is_plain_text():
     out = subprocess.run([sys.executable, "-m", "handbook", "design", "--help"], capture_output=True, text=True,
                          timeout=60)
     assert out.returncode == 0 and "``" not in out.stdout and ":mod:" not in out.stdout and "--template" in out.stdout
+    # a known key under the wrong table names the table it belongs in
+    wrong = _run(tmp_path, "[commutation]\ni_no_trip = 0.5\n")
+    assert wrong.returncode == 2 and "it belongs in [current_limiter]" in wrong.stderr

@@ -49,6 +49,9 @@ def parse(data: dict) -> dict:
         params = {p.name: p for p in TABLES[table]}
         for key, value in body.items():
             if key not in params:
+                home = _table_of(key)
+                if home is not None:  # a known key in the wrong table
+                    raise InputError(f"{key} is not a key of [{table}]: it belongs in [{home}]")
                 near = difflib.get_close_matches(key, params, n=1)
                 raise InputError(f"unknown key {table}.{key}" + (f": did you mean {table}.{near[0]}?" if near else
                                                                  f": known keys are {', '.join(params)}"))
