@@ -148,9 +148,8 @@ def cmd_design(args) -> int:
         try:
             for table, figures in spice.confirm(designed).items():
                 out[table]["spice"] = figures
-                if figures.get("ok") is False:
-                    print(f"warning: --spice: [{table}] the simulation does not confirm the design: {figures}",
-                          file=sys.stderr)
+                for warning in spice.warnings(table, figures):
+                    print(f"warning: --spice: [{table}] {warning}", file=sys.stderr)
         except (spice.SpiceUnavailable, spice.SpiceError) as exc:
             return _design_error(args, 4, f"--spice: {exc}")
     if args.bom and not failed:
@@ -185,8 +184,12 @@ def _spice_value(key: str, value) -> str:
     """A --spice figure with its unit: currents, frequencies, voltages (swings, headroom, ripple), yes/no."""
     from .report.tables import eng
 
-    if isinstance(value, bool) or key in ("ok", "window_reached"):
+    if isinstance(value, bool) or key in ("ok", "window_reached", "meets_spec", "agrees"):
         return "yes" if value else "no"
+    if key == "differs":
+        return ", ".join(value) or "none"
+    if key == "corners":
+        return f"{value:d} simulated"
     unit = "A" if key.startswith("i_") else "Hz" if key.startswith("f_") else "V"
     return eng(value, unit) + (" rms" if key.startswith("ripple") else "")
 
@@ -198,8 +201,12 @@ def cmd_spice(args) -> int:
         rows = spice.rows()
     except (spice.SpiceUnavailable, spice.SpiceError) as exc:
         print(f"error: {exc}", file=sys.stderr)
+        if args.json:  # a script reading stdout gets the reason too, as design --spice --json gives it
+            print(json.dumps({"error": {"exit": 4, "message": str(exc),
+                                        "skipped": isinstance(exc, spice.SpiceUnavailable)}}, indent=1))
         return 4
-    keys = ("id", "circuit", "quantity", "unit", "equation", "spice", "rel_diff", "agrees", "kind", "verdict")
+    keys = ("id", "circuit", "quantity", "unit", "equation", "spice", "rel_diff", "agrees", "rtol", "why", "kind",
+            "verdict")
     for r in rows:
         if "error" in r:
             print(f"error: {r['error']}", file=sys.stderr)
@@ -269,7 +276,8 @@ def main(argv=None) -> int:
     p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")
     p.set_defaults(func=cmd_design)
     p = sub.add_parser("spice", help="every circuit's SPICE checks: equation against ngspice")
-    p.add_argument("--json", action="store_true", help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, agrees")
+    p.add_argument("--json", action="store_true",
+                   help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, agrees, rtol, why, kind, verdict")
     p.set_defaults(func=cmd_spice)
     p = sub.add_parser("render", help="render a re-run chapter (or 'Design your own' on a spec) to a web page with "
                        "the book's look, offline")

@@ -96,6 +96,9 @@ def test_json_error_object_and_the_table_a_key_belongs_to(tmp_path):
     assert out.returncode == 2 and "put it under [commutation]" in out.stderr
     err = json.loads(out.stdout)["error"]
     assert err["exit"] == 2 and "pole_pairs = 4" in err["message"]
+    # a known key under the wrong table names the table it belongs in
+    wrong = _run(tmp_path, "[commutation]\ni_no_trip = 0.5\n")
+    assert wrong.returncode == 2 and "it belongs in [current_limiter]" in wrong.stderr
 
 
 def test_one_table_that_cannot_be_met_still_reports_the_others(tmp_path):
@@ -112,6 +115,3 @@ def test_help_is_plain_text():
     out = subprocess.run([sys.executable, "-m", "handbook", "design", "--help"], capture_output=True, text=True,
                          timeout=60)
     assert out.returncode == 0 and "``" not in out.stdout and ":mod:" not in out.stdout and "--template" in out.stdout
-    # a known key under the wrong table names the table it belongs in
-    wrong = _run(tmp_path, "[commutation]\ni_no_trip = 0.5\n")
-    assert wrong.returncode == 2 and "it belongs in [current_limiter]" in wrong.stderr

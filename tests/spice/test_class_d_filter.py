@@ -76,11 +76,15 @@ def test_a_class_d_design_is_confirmed(ngspice):
     from handbook.design import class_d_model as model
 
     spec = {"r_load": 4.0, "supply": 20.0, "f_audio": 500.0, "osc_tol_slow": 0.2, "osc_tol_fast": 0.235,
-            "l_tolerance": 0.1, "c_tolerance": 0.05}
-    result = SimpleNamespace(spec=spec, l_out=220e-6, c_out=22e-6, f_sw=77.16e3)
-    out = class_d.design_check(result)
-    assert set(out) == {"f_corner", "ripple_at_load"}
-    assert out["f_corner"] == pytest.approx(eqs.filter_f0(220e-6, 22e-6), rel=5e-3)
+            "l_tolerance": 0.1, "c_tolerance": 0.05, "ripple_max": 0.5}
     fo, lo, co = model.corner_factors(spec)
     worst = max(eqs.ripple_rms(77.16e3 * a, 220e-6 * b, 22e-6 * c, 4.0, 20.0) for a, b, c in zip(fo, lo, co))
-    assert out["ripple_at_load"] == pytest.approx(worst, rel=0.02)
+    result = SimpleNamespace(spec=spec, l_out=220e-6, c_out=22e-6, f_sw=77.16e3, figures={"ripple": worst})
+    out = class_d.design_check(result)
+    assert set(out) == {"f_corner", "f_corner_equation", "ripple_at_load", "ripple_at_load_equation", "corners",
+                        "meets_spec"}
+    assert out["f_corner_equation"] == pytest.approx(eqs.filter_f0(220e-6, 22e-6), rel=1e-12)
+    assert out["f_corner"] == pytest.approx(out["f_corner_equation"], rel=1e-3)
+    assert out["ripple_at_load"] == pytest.approx(worst, rel=2e-3) and out["meets_spec"]
+    tight = SimpleNamespace(**{**vars(result), "spec": {**spec, "ripple_max": 0.9 * out["ripple_at_load"]}})
+    assert class_d.design_check(tight)["meets_spec"] is False  # judged against the spec by SPICE's own figure

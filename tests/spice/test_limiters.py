@@ -63,17 +63,22 @@ def test_the_corner_shows_the_input_range_failure(ngspice):
     assert corner["i_back"] < corner["i_trip"]  # it comes back, then trips where the node equation says
 
 
-def test_a_design_is_confirmed_at_its_two_worst_corners(ngspice):
+def test_a_design_is_confirmed_at_every_candidate_corner(ngspice):
+    """SPICE runs all 1536 corners and keeps its own extremes: the design's corner choice is not used, so a
+    wrong sign or a missed corner in the design's search would show as a difference here."""
     from handbook.design import current_limiter
+    from handbook.spice import checks
 
     r = current_limiter.design({})
     lo, hi, head = limiters.design_corners(r)
     assert lo["i_eq"] == pytest.approx(r.i_trip_min, rel=1e-9) and hi["i_eq"] == pytest.approx(r.i_trip_max, rel=1e-9)
     assert head["head_eq"] == pytest.approx(r.headroom_min, rel=1e-9)
     out = limiters.design_check(r)
-    assert out["i_trip_min"] == pytest.approx(r.i_trip_min, rel=0.01)
-    assert out["i_trip_max"] == pytest.approx(r.i_trip_max, rel=0.01)
-    assert out["ok"] and out["headroom_min"] == pytest.approx(r.headroom_min, abs=5e-3)
+    assert out["corners"] == len(limiters.design_candidates(r)) == 1536
+    assert out["i_trip_min_equation"] == r.i_trip_min and out["i_trip_max_equation"] == r.i_trip_max
+    rows = checks.confirm_rows("current_limiter", r, out)
+    assert all(row["agrees"] and row["verdict"] == "agrees" and row["rel_diff"] <= row["rtol"] for row in rows)
+    assert out["ok"] and out["meets_spec"]
 
 
 def test_a_network_that_leaves_the_op_amp_latched_is_not_confirmed(ngspice):
@@ -86,7 +91,11 @@ def test_a_network_that_leaves_the_op_amp_latched_is_not_confirmed(ngspice):
     r = current_limiter.design({})
     bad = dataclasses.replace(r, r12=r.r12 * 0.93)
     out = limiters.design_check(bad)
-    assert not out["ok"] and out["headroom_min"] < 2.0
+    assert not out["ok"] and out["headroom_min"] < 2.0 and not out["meets_spec"]
+    from handbook.spice import checks
+
+    said = checks.warnings("current_limiter", checks.judged("current_limiter", out))
+    assert any("does not confirm" in w for w in said) and any("miss the spec" in w for w in said)
 
 
 def test_lcapy_derives_eq_13_from_the_netlist():

@@ -54,7 +54,11 @@ def test_spice_command_and_designs_confirmed_by_simulation():
     out = subprocess.run([sys.executable, "-m", "handbook", "spice", "--json"], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     rows = json.loads(out.stdout)
-    assert {"id", "circuit", "quantity", "equation", "spice", "rel_diff", "agrees"} <= set(rows[0])
+    assert {"id", "circuit", "quantity", "equation", "spice", "rel_diff", "agrees", "rtol", "why", "kind",
+            "verdict"} <= set(rows[0])
+    assert all(r["rel_diff"] <= r["rtol"] and r["why"] for r in rows)
+    assert all(r["verdict"] == ("agrees" if r["kind"] == "independent" else "consistent (by construction)")
+               for r in rows)
     assert len({r["circuit"] for r in rows}) >= 9 and all(r["agrees"] for r in rows)
     # a circuit's variants (the filter's AC and transient decks, each load) count as one circuit
     family = {r["circuit"]: re.sub(r"-(4|8)ohm$", "", r["circuit"]).replace("ripple", "filter") for r in rows}
@@ -74,6 +78,13 @@ def test_design_spice_adds_the_simulated_corners(tmp_path):
     assert lim["spice"]["i_trip_min"] == pytest.approx(lim["i_trip_min"], rel=0.01)
     assert lim["spice"]["i_trip_max"] == pytest.approx(lim["i_trip_max"], rel=0.01)
     assert {"swing_rpm_min", "swing_rpm_max"} <= set(com["spice"]) and {"f_corner", "ripple_at_load"} <= set(cd["spice"])
+    # every table: each SPICE figure beside the design's own, judged against the tolerance and the spec
+    for table, keys in (("current_limiter", ("i_trip_min", "i_trip_max", "headroom_min")),
+                        ("commutation", ("swing_rpm_min", "swing_rpm_max")), ("class_d", ("f_corner", "ripple_at_load"))):
+        sp = r[table]["spice"]
+        assert all(f"{k}_equation" in sp for k in keys), table
+        assert sp["meets_spec"] and sp["agrees"] and sp["differs"] == [], table
+    assert "warning" not in out.stderr
     # the corner of the filter by hand: 1 / (2 pi sqrt(2 L C)) with the chosen L and C
     assert cd["spice"]["f_corner"] == pytest.approx(1 / (2 * math.pi * math.sqrt(2 * cd["l_out"] * cd["c_out"])), rel=0.01)
 
@@ -90,6 +101,31 @@ def test_a_failing_circuit_is_reported_and_the_others_still_are(monkeypatch):
     bad = [r for r in rows if r["circuit"] == "broken"]
     assert len(bad) == 1 and not bad[0]["agrees"] and "line 2: `R1 a`" in bad[0]["error"]
     assert any(r["circuit"] == "decoupling" and r["agrees"] for r in rows)
+
+
+def test_spice_json_without_ngspice_prints_an_error_object(tmp_path):
+    env = {"PATH": str(tmp_path), "PYTHONPATH": ":".join(sys.path)}
+    out = subprocess.run([sys.executable, "-m", "handbook", "spice", "--json"], capture_output=True, text=True,
+                         env=env, timeout=60)
+    assert out.returncode == 4 and "Traceback" not in out.stderr
+    err = json.loads(out.stdout)["error"]
+    assert err["exit"] == 4 and err["skipped"] and "ngspice is not installed" in err["message"]
+
+
+@needs_ngspice
+def test_a_garbage_line_and_an_unknown_node_are_named():
+    # "this is garbage" reads as a transmission line named "this": ngspice names the device, the runner the line
+    with pytest.raises(runner.SpiceError, match=r"at line 4: `this is garbage`"):
+        runner.run("* garbage\nR1 a 0 1k\nV1 a 0 1\nthis is garbage\n.op\n.meas op x FIND v(a)\n.end\n")
+    # ngspice says only "no data saved ... not found": the runner names the measurement and the node
+    with pytest.raises(runner.SpiceError, match=r"line 5: `\.meas dc x FIND v\(nonode\) AT=0\.5` reads v\(nonode\)"):
+        runner.run("* unknown node\nR1 a 0 1k\nV1 a 0 1\n.dc V1 0 1 0.1\n.meas dc x FIND v(nonode) AT=0.5\n.end\n")
+
+
+def test_unknown_vectors_reads_meas_lines_against_the_elements():
+    deck = "* t\nR1 a b 1k\nV1 a 0 1\n.meas dc x FIND v(a,b) AT=1\n.meas dc y FIND i(V2) AT=1\n.meas dc z FIND v(q) AT=1\n"
+    assert runner.unknown_vectors(deck) == [(5, ".meas dc y FIND i(V2) AT=1", "i(V2)"),
+                                            (6, ".meas dc z FIND v(q) AT=1", "v(q)")]
 
 
 def test_a_malformed_element_line_is_named_with_its_line_number():
@@ -122,3 +158,35 @@ def test_waveform_or_reason_returns_a_sentence_not_a_traceback(monkeypatch):
     assert out is None and why.startswith("SPICE plot skipped: ngspice is not installed")
     with pytest.raises(ZeroDivisionError):  # anything else is a bug, and is raised
         runner.waveform_or_reason(lambda: 1 / 0)
+
+
+def test_confirm_rows_carry_tolerance_reason_kind_and_verdict():
+    """The design chapters' "Confirmed by simulation" tables: every row has its tolerance, its reason and its
+    kind, and the commutation's rows (constant current between the design's own levels) never say "agrees"."""
+    from handbook.spice import checks
+
+    figures = {"swing_rpm_min": 1.3070, "swing_rpm_min_equation": 1.3075, "swing_rpm_max": 0.2849,
+               "swing_rpm_max_equation": 0.2850, "window_reached": True, "meets_spec": False}
+    rows = checks.confirm_rows("commutation", None, figures)
+    assert [r["kind"] for r in rows] == ["sanity", "sanity"]
+    assert all(r["verdict"] == "consistent (by construction)" and r["rtol"] and r["why"] for r in rows)
+    judged = checks.judged("commutation", figures)
+    said = checks.warnings("commutation", judged)
+    assert judged["agrees"] and any("reached its window" in w for w in said) and any("miss the spec" in w for w in said)
+    off = checks.judged("commutation", {**figures, "swing_rpm_min": 1.4, "window_reached": False, "meets_spec": True})
+    assert off["differs"] == ["swing_rpm_min"] and checks.warnings("commutation", off) == [
+        "SPICE's swing_rpm_min = 1.4 is outside its tolerance of the design's 1.3075"]
+    for table in checks.CONFIRM:
+        assert all(kind in ("independent", "sanity") and 0 < rtol <= 0.005 for *_, rtol, _, kind in checks.CONFIRM[table])
+
+
+@needs_ngspice
+def test_chapter_table_names_the_circuit_when_decks_share_quantities():
+    from handbook.spice import class_d, converter
+    from handbook.spice.circuit import chapter_table
+
+    text = chapter_table(class_d.circuit(), class_d.circuit_8ohm(), class_d.ripple()).data
+    assert text.splitlines()[0].lstrip("| ").startswith("circuit")
+    assert "R_L = 8 ohm, AC" in text and "±0.1 %" in text and "Why each tolerance" in text
+    one = chapter_table(converter.circuit()).data
+    assert not one.splitlines()[0].lstrip("| ").startswith("circuit") and "±0.5 %" in one

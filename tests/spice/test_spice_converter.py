@@ -4,7 +4,7 @@ for figure 13's L1 and R1 and for the L1 and R1 that eq 3 to 6a design."""
 import re
 
 import pytest
-from drawn_parts import drawn_labels
+from drawn_parts import assert_same_parts, drawn_labels
 
 from handbook.sources import tca5600
 from handbook.spice import converter
@@ -26,9 +26,35 @@ def test_drawing_and_netlist_have_the_same_parts():
     v = {p.ref: p.value for p in c.parts}
     for name, ref in (("VCC2", "VCC2"), ("L1", "L1"), ("R1", "R1"), ("VS1", "S1"), ("VC2", "VC2")):
         assert _value(c.netlist, name) == pytest.approx(v[ref], rel=1e-6)
-    assert f"V={v['U1']:.6g}-(v(e)+{v['R1']:.6g}*i(VD1))" in c.netlist  # the comparator's threshold
+    assert f"V={v['U1']:.6g} - (v(e)+{v['R1']:.6g}*i(VAMD))" in c.netlist  # the comparator's threshold
     i_s = float(re.search(r"\.model D_D1 D\(IS=(\S+) N=1\)", c.netlist).group(1))  # D1 drops V_F at I_peak / 2
     assert converter.diode_is(v["D1"], v["U1"] / v["R1"] / 2) == pytest.approx(i_s, rel=1e-5)
+
+
+#: netlist elements that are not parts of figure 13, and why
+AUX = {"VAMD": "an ammeter (0 V) in series with D1: the dump current U1 and the charge count read",
+       "BQ": "integrates the dump current into a charge (a probe)", "CQ": "the probe's 1 F integrator",
+       "RQ": "the probe's DC path (1e15 ohm)"}
+
+
+@pytest.mark.parametrize("build", [converter.circuit, lambda: converter.circuit({"l1": 150e-6, "r1": 0.47})],
+                         ids=["figure-13", "other-l1-r1"])
+def test_drawing_netlist_and_parts_are_one_set_both_ways(build):
+    """The shared test of every SPICE circuit (tests/drawn_parts.py): drawn set == parts == netlist set, each
+    value on each side, and nothing in the netlist that is neither a part nor declared above."""
+    assert_same_parts(build(), AUX)
+
+
+def test_the_part_set_test_sees_a_stray_element_and_a_wrong_value():
+    import dataclasses
+
+    c = converter.circuit()
+    stray = dataclasses.replace(c, netlist=c.netlist.replace("VC2 out 0", "RX out 0 1e6\nVC2 out 0"))
+    with pytest.raises(AssertionError, match="RX"):
+        assert_same_parts(stray, AUX)
+    wrong = dataclasses.replace(c, netlist=c.netlist.replace("R1 e 0 0.68", "R1 e 0 0.82"))
+    with pytest.raises(AssertionError, match="R1"):
+        assert_same_parts(wrong, AUX)
 
 
 def test_defaults_are_figure_13s_and_the_chapters():

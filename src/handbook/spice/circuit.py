@@ -98,10 +98,12 @@ def evaluate(circuit: Circuit, run=None) -> list[dict]:
     return rows
 
 
-def chapter_table(*circuits):
+def chapter_table(*circuits, by_circuit: bool | None = None):
     """The chapters' "equation vs SPICE" table of one or more circuits (quantity, equation, SPICE, difference,
     tolerance, verdict) with each tolerance's reason below it, as Markdown; or a line saying the SPICE
-    check was skipped and why when ngspice is missing."""
+    check was skipped and why when ngspice is missing. ``by_circuit`` (default: when more than one circuit is
+    given) adds a first column naming each row's circuit by its title, for decks that share quantities (the
+    LM4651 filter with 4 and 8 ohm, AC and transient)."""
     from IPython.display import Markdown
 
     from ..report.tables import eng, table
@@ -113,11 +115,19 @@ def chapter_table(*circuits):
         return Markdown(f"**SPICE check skipped:** {exc}.")
     except SpiceError as exc:  # a netlist ngspice refused: said on the page, not a traceback
         return Markdown(f"**SPICE run failed:** {exc}.")
-    body = table(["quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
-                 [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
-                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"±{r['rtol']:.1%}",
-                   r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
-    why = "\n".join(f"- *{r['quantity']}*, ±{r['rtol']:.1%}"
+    titles = {c.id: c.title for c in circuits}
+    first = (len(circuits) > 1) if by_circuit is None else by_circuit
+    lead = ["circuit"] if first else []
+    body = table([*lead, "quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
+                 [[*([titles[r["circuit"]]] if first else []), r["quantity"], eng(r["equation"], r["unit"]),
+                   eng(r["spice"], r["unit"]), f"{(r['spice'] - r['equation']) / r['equation']:+.2%}",
+                   _tolerance(r["rtol"]), r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
+    why = "\n".join(f"- {titles[r['circuit']] + ', ' if first else ''}*{r['quantity']}*, {_tolerance(r['rtol'])}"
                     + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity" else "")
                     + f": {r['why']}." for r in rows)
     return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)
+
+
+def _tolerance(rtol: float) -> str:
+    """±0.5 %, ±0.05 %, ±0.01 %: enough figures to show a tight tolerance as it is."""
+    return f"±{rtol * 100:.2g} %"

@@ -122,5 +122,9 @@ def one_transistor(parts):
     d.add(elm.Dot().at((q.emitter[0], top)))
     _two(d, elm.Resistor, by["RL"], q.collector, (q.collector[0], 0), loc="bottom")
     d.add(elm.Ground().at((q.collector[0], 0)))
-    d.add(elm.Dot(open=True).at(q.collector).label("to the regulator's drive", loc="left"))
+    # the drive the collector pulls: led off to the right, clear of T2's symbol and its label
+    tap = (q.collector[0] + 3.0, q.collector[1] - 1.0)
+    d.add(elm.Dot().at((q.collector[0], tap[1])))
+    d.add(elm.Line().endpoints((q.collector[0], tap[1]), tap))
+    d.add(elm.Dot(open=True).at(tap).label("to the regulator's\ndrive", loc="right"))
     return d

@@ -81,6 +81,50 @@ def malformed(netlist: str) -> list[tuple[int, str, str]]:
     return out
 
 
+#: a vector a measurement reads: v(node), v(a,b), i(source)
+_VECTOR = re.compile(r"\b([vi])\(\s*([^\s(),]+)\s*(?:,\s*([^\s(),]+)\s*)?\)", re.IGNORECASE)
+
+
+def unknown_vectors(netlist: str) -> list[tuple[int, str, str]]:
+    """`.meas` lines that read a node or a source no top-level element line names: [(line number, line,
+    "v(name)" or "i(name)")]. Asked only after ngspice has failed (its own words are "no data saved" or
+    "not found", naming nothing)."""
+    lines = netlist.splitlines()
+    names, nodes, control = set(), {"0", "gnd"}, False
+    for k, line in enumerate(lines, start=1):
+        text = line.split(";")[0].strip().lower()
+        if k == 1 or not text or text[0] in "*+":
+            continue
+        if text.startswith((".control", ".subckt")):
+            control = True
+        elif text.startswith((".endc", ".ends")):
+            control = False
+        elif not control and text[0] != ".":
+            name, *fields = text.split()
+            names.add(name)
+            nodes.update(re.split(r"[\s(),=]+", " ".join(fields)))
+    out = []
+    for k, line in enumerate(lines, start=1):
+        if not re.match(r"\s*\.?meas", line, re.IGNORECASE):
+            continue
+        for kind, a, b in _VECTOR.findall(line):
+            missing = [x for x in (a, b) if x and x.lower() not in (nodes if kind.lower() == "v" else names)]
+            if missing:
+                out.append((k, line.strip(), f"{kind.lower()}({', '.join(missing)})"))
+    return out
+
+
+def _named(netlist: str, said: str) -> str:
+    """The deck's element line whose name ngspice puts before a colon ("this: transmission line z0 must be
+    given"), as "line N: `text`", or ""."""
+    heads = {m.lower() for m in re.findall(r"([A-Za-z_][\w.]*)\s*:", said)}
+    for n, line in enumerate(netlist.splitlines(), start=1):
+        first = line.split()[0].lower() if line.split() else ""
+        if n > 1 and first and first[0] not in "*.+" and first in heads:
+            return f"line {n}: `{line.strip()}`"
+    return ""
+
+
 def _where(netlist: str, said: str) -> str:
     """The deck's line ngspice complains about, as "line N: `text`" (from its line number, else from the
     element line it quotes), or ""."""
@@ -94,7 +138,7 @@ def _where(netlist: str, said: str) -> str:
         for n, line in enumerate(lines, start=1):
             if line.strip().lower() == quoted or (quoted and line.strip().lower().startswith(quoted)):
                 return f"line {n}: `{line.strip()}`"
-    return ""
+    return _named(netlist, said)
 
 
 def run(netlist: str, timeout: float = 30.0) -> dict[str, float]:
@@ -102,14 +146,14 @@ def run(netlist: str, timeout: float = 30.0) -> dict[str, float]:
 
     The netlist's first line is its title (SPICE's rule); its `.meas` lines name what is returned.
     """
-    exe = available()
-    if exe is None:
-        raise SpiceUnavailable(why_unavailable())
     title = netlist.strip().splitlines()[0].lstrip("* ").strip() if netlist.strip() else "(empty netlist)"
-    bad = malformed(netlist)
+    bad = malformed(netlist)  # read before ngspice is looked for: a bad deck is reported where ngspice is missing too
     if bad:
         raise SpiceError(f"{title}: malformed element line(s), not run: "
                          + "; ".join(f"line {n}: `{line}` ({why})" for n, line, why in bad))
+    exe = available()
+    if exe is None:
+        raise SpiceUnavailable(why_unavailable())
     with tempfile.TemporaryDirectory(prefix="handbook-spice-") as tmp:
         deck = Path(tmp) / "deck.cir"
         deck.write_text(netlist if netlist.rstrip().lower().endswith(".end") else netlist.rstrip() + "\n.end\n")
@@ -127,8 +171,11 @@ def run(netlist: str, timeout: float = 30.0) -> dict[str, float]:
         said = [line.strip() for line in proc.stderr.splitlines()
                 if line.strip() and not line.lower().startswith(("note: no compatibility", "warning"))]
         where = _where(netlist, proc.stderr + "\n" + proc.stdout)
+        unread = unknown_vectors(netlist)
         raise SpiceError(f"{title}: ngspice refused the netlist (exit {proc.returncode})"
-                         + (f" at {where}" if where else "") + ": " + "; ".join(said[:4] or ["no message"]))
+                         + (f" at {where}" if where else "") + ": " + "; ".join(said[:4] or ["no message"])
+                         + "".join(f"; line {n}: `{line}` reads {vec}, a node or source no element line names"
+                                   for n, line, vec in unread))
     if failed:
         raise SpiceError(f"{title}: measurement {', '.join(sorted(set(failed)))} failed (the event it waits for "
                          "never happened in the simulated time)")

@@ -35,7 +35,8 @@ BOARD = {ref: value for ref, _, value, *_ in PARTS}
 START_RULE = 2.0 / 1e-6  # s per F
 #: what a check between the equation's own levels can and cannot show (the timers' sanity checks)
 SANITY = ("by construction: the deck integrates the same constant current between the same levels the equation "
-          "uses, so it checks the deck's switching logic and the solver's step, not the equation")
+          "uses, so it checks the deck's switching logic and the solver's step, not the equation (the IC's timers "
+          "have no independent SPICE check: their equations are this charge balance)")
 
 
 def element_lines(parts, nodes: dict[str, str]) -> list[str]:
@@ -102,10 +103,11 @@ def start_oscillator(p: dict | None = None) -> Circuit:
                     kind="sanity"),
               Check("start-frequency", "start oscillator's frequency against the TDA5144 datasheet's rule "
                     "t = 2 s/uF x CAP-ST", "Hz", 1 / (START_RULE * q["cap_st"]), "freq", 0.005,
-                    "the datasheet's printed rule (its example: 500 ms, C = 0.5/2 = 0.25 uF), not the charge balance "
-                    "the deck runs; it holds for the typical 2 uA and the 0.20 V / 2.20 V levels (a part at its "
-                    "1.5 or 2.5 uA moves both by 25 %). The note's eq 1, 2.15 s/uF, is for 0.05 V to 2.2 V and would "
-                    f"be 7.5 % slow here. Left: {why}: ±0.5 %"))
+                    "by construction: the datasheet's printed rule (its example: 500 ms, C = 0.5/2 = 0.25 uF) is the "
+                    "same charge balance the deck runs, 2 x 2 V / 2 uA = 2 s per uF at the typical current and the "
+                    "0.20 V / 2.20 V levels (a part at its 1.5 or 2.5 uA moves both by 25 %), so it checks that the "
+                    "rule and the datasheet's figures are one, not the oscillator. The note's eq 1, 2.15 s/uF, is for "
+                    f"0.05 V to 2.2 V and would be 7.5 % slow here. Left: {why}: ±0.5 %", kind="sanity"))
     return Circuit("cap-st", "CAP-ST start oscillator", "AN94002 2.1.1; TDA5144 datasheet", parts,
                    "\n".join(lines) + "\n", checks, draw=lambda: draw_timer(parts, "CAP-ST"))
 
@@ -228,8 +230,11 @@ def design_check(result) -> dict:
     twice its charge current and stops at its own levels. One run; the simulation's own worst swings:
     {"swing_rpm_min": the largest at rpm_min, "swing_rpm_max": the smallest at rpm_max, "window_reached":
     whether any rpm_min corner's swing reached that corner's own window (its source stopped at the high
-    level: the design does not fit)}. A design whose corner search missed a corner shows here as a larger
-    swing than its swing_at_rpm_min; a swing beyond a corner's window is cut at that window."""
+    level: the design does not fit), each swing beside the design's own figure ("*_equation"), "corners" (20)
+    and "meets_spec" (no window reached and the smallest swing at rpm_max at least min_excursion)}. A design
+    whose corner search missed a corner shows here as a larger swing than its swing_at_rpm_min; a swing beyond
+    a corner's window is cut at that window. A sanity check: each timer integrates the same constant current
+    between the same levels as the design's formula; what it adds is the corner search of its own."""
     import itertools
 
     s, c = result.spec, result.cap_cd
@@ -254,8 +259,12 @@ def design_check(result) -> dict:
     out = run("\n".join([*lines, f".tran {step:.6g} {end:.9g} 0 {step:.6g} uic"]) + "\n")
     swings = {(sp, k): out[f"hi_{sp}{k}"] - out[f"lo_{sp}{k}"] for sp, k, *_ in corners}
     reached = any(swings["min", k] >= (v_hi - v_lo) - 2 * CLAMP for sp, k, _, _, (v_lo, v_hi) in corners if sp == "min")
-    return {"swing_rpm_min": max(w for (sp, _), w in swings.items() if sp == "min"),
-            "swing_rpm_max": min(w for (sp, _), w in swings.items() if sp == "max"), "window_reached": reached}
+    hi = max(w for (sp, _), w in swings.items() if sp == "min")
+    lo = min(w for (sp, _), w in swings.items() if sp == "max")
+    return {"swing_rpm_min": hi, "swing_rpm_min_equation": float(result.swing_at_rpm_min),
+            "swing_rpm_max": lo, "swing_rpm_max_equation": float(result.swing_at_rpm_max),
+            "window_reached": bool(reached), "corners": len(corners),
+            "meets_spec": bool(not reached and lo >= s["min_excursion"])}
 
 
 # ----------------------------------------------------------------------------------------------
