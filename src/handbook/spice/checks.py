@@ -129,10 +129,36 @@ def warnings(table: str, figures: dict) -> list[str]:
         out.append("a corner's CAP-CD swing reached its window at rpm_min: the design does not fit")
     if figures.get("meets_spec") is False:
         out.append("SPICE's figures miss the spec")
+    from ..report.tables import eng
+
+    units = {key: unit for _q, unit, key, *_ in CONFIRM[table]}
     for key in figures.get("differs", ()):
-        out.append(f"SPICE's {key} = {figures[key]:.6g} is outside its tolerance of the design's "
-                   f"{figures[key + '_equation']:.6g}")
+        out.append(f"SPICE's {key} = {eng(figures[key], units.get(key, ''))} is outside its tolerance of the "
+                   f"design's {eng(figures[key + '_equation'], units.get(key, ''))}")
     return out
+
+
+def confirm_table(table: str, result):
+    """The design chapters' "Confirmed by simulation" table: quantity, the design's figure, SPICE's, the
+    difference, the tolerance and the verdict, with each tolerance's reason below; or why it was skipped."""
+    from IPython.display import Markdown
+
+    from ..report.tables import eng
+    from ..report.tables import table as md_table
+
+    try:
+        rows = confirm_rows(table, result)
+    except SpiceUnavailable as exc:
+        return Markdown(f"*SPICE check skipped: {exc}.*")
+    except SpiceError as exc:
+        return Markdown(f"**SPICE run failed:** {exc}.")
+    body = md_table(["quantity", "design (equations)", "SPICE", "difference", "tolerance", "verdict"],
+                    [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
+                      f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"±{r['rtol'] * 100:.2g} %",
+                      r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
+    why = "\n".join(f"- *{r['quantity']}*" + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity"
+                                              else "") + f": {r['why']}." for r in rows)
+    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)
 
 
 __all__ = ["CONFIRM", "SpiceError", "SpiceUnavailable", "available", "circuits", "confirm", "confirm_rows", "judged", "rows",
