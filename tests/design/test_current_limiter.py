@@ -209,3 +209,18 @@ def test_monte_carlo_inside_the_corners_and_the_notes_design_outside():
     note = current_limiter.monte_carlo_trip(0.075, (267.0, 5.6e3, 16e3, 5.6e3, 16e3), r.spec, n=50_000, seed=1)
     assert note["yield"] < 0.85 and note["i_min"] < 0.5 and note["i_max"] > 2.0
     assert math.isfinite(note["i_p999"])
+
+
+def test_a_relaxation_ipopt_calls_infeasible_is_not_taken_as_proof():
+    """IPOPT reports this spec's root relaxation locally infeasible, yet exhaustive enumeration finds a
+    network with R7 = 27 mOhm; the design must find it too (the bound falls back to the exact vertex bound)."""
+    spec = dict(i_no_trip=4.316992187527374, resistor_tolerance=0.01, r7_tolerance=0.01, zener_voltage=12.0,
+                zener_tolerance=0.02, offset=0.0071812903122027965, input_bias=1e-7, min_margin=0.0,
+                input_offset_current=1.5e-7, divider_current_max=0.1, input_headroom=2.0, r7_series="E12", r7_min=0.01,
+                r7_max=100.0, r9_series="E6", r9_min=100.0, r9_max=10000.0)
+    spec["i_must_trip"] = spec["i_no_trip"] * 3.0
+    for n, low in zip(("r10", "r11", "r12", "r13"), (1000.0, 22000.0, 10000.0, 22000.0)):
+        spec.update({f"{n}_series": "E12", f"{n}_min": low, f"{n}_max": low * 3})
+    expected = enumerate_limiter(spec)
+    assert expected is not None and expected[0] == pytest.approx(0.027)
+    assert current_limiter.design(spec).r7 == pytest.approx(expected[0])

@@ -175,7 +175,7 @@ def test_confirm_rows_carry_tolerance_reason_kind_and_verdict():
     assert judged["agrees"] and any("reached its window" in w for w in said) and any("miss the spec" in w for w in said)
     off = checks.judged("commutation", {**figures, "swing_rpm_min": 1.4, "window_reached": False, "meets_spec": True})
     assert off["differs"] == ["swing_rpm_min"] and checks.warnings("commutation", off) == [
-        "SPICE's swing_rpm_min = 1.4 is outside its tolerance of the design's 1.3075"]
+        "SPICE's swing_rpm_min = 1.4 V is outside its tolerance of the design's 1.308 V"]
     for table in checks.CONFIRM:
         assert all(kind in ("independent", "sanity") and 0 < rtol <= 0.005 for *_, rtol, _, kind in checks.CONFIRM[table])
 

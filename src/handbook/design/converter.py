@@ -50,20 +50,33 @@ from ..sources.tca5600 import circuit as tca5600
 from ..sources.tca5600 import data as tca5600_data
 from . import converter_cores
 from .common import Result, completed, ordered
+from .converter_coil import (  # noqa: F401 (the coil's names are this module's too)
+    ALPHA_CU,
+    GAP_MIN,
+    MU0,
+    RHO_CU,
+    SUPPLY_POINTS,
+    T_LOSS,
+    T_WIRE_TABLE,
+    Coil,
+    b_sat,
+    candidates,
+    coil,
+    coil_voltages,
+    core_loss,
+    core_reluctance,
+    frequency,
+    gap_for,
+    gap_reluctance,
+    igse_density,
+    steinmetz_range,
+    supplies,
+    v_top,
+    wind,
+)
 from .solvers import Infeasible
 
 TABLE = "converter"
-MU0 = 4e-7 * math.pi
-#: the smallest centre gap designed (PyOpenMagnetics' gap model): assumption, a ground gap holds about
-#: +-5 um, so from 50 um up the gap moves A_L by at most +-10 % (the ``a_l_tolerance`` default)
-GAP_MIN = 50e-6
-#: the temperature of the Steinmetz coefficients' factor ct0 - ct1 T + ct2 T^2 (C): 25 C, where the MnZn
-#: power ferrites of the candidate set lose most across 25..100 C (conservative)
-T_LOSS = 25.0
-#: copper resistivity at 20 C (ohm m) and its temperature coefficient (1/K)
-RHO_CU, ALPHA_CU = 1.72e-8, 0.00393
-#: the temperature of the shipped wire resistances (C)
-T_WIRE_TABLE = converter_cores.T_HOT
 #: the upper end of the audio band (Hz): the excerpt's own example of a frequency above it
 AUDIO_BAND = 20e3
 #: assumption: the TCA5600's internal switch carries the peak current the excerpt's own R1 = 0.68 ohm sets at
@@ -74,43 +87,8 @@ SWITCH_I_MAX = 0.4 / tca5600_data.APPLICATION["r1"]
 C_SELF = 10e-12
 #: turns above which the winding is impractical by hand and its self-capacitance grows: a warning
 TURNS_WARN = 300
-#: supply points over which the core loss and the audio band are evaluated
-SUPPLY_POINTS = 41
 #: the lowest Iout2 the exit-3 search tries (A): below it no TCA5600 board is sensible
 I_OUT_FLOOR = 1e-6
-
-
-@dataclass(frozen=True)
-class Coil:
-    """One candidate core wound for L1 at I_peak: what it takes and what it costs."""
-
-    shape: str
-    material: str
-    ve: float
-    turns: int
-    gap: float | None
-    a_l: float
-    b_peak: float  # over the centre column, at the highest peak current
-    b_peak_min_area: float  # at the narrowest section (the saturation figure)
-    b_sat: float  # the material's saturation at t_ambient + the rise
-    saturation_margin: float
-    wire: str | None
-    wire_diameter: float | None
-    current_density: float | None
-    r_dc: float | None
-    core_loss: float | None
-    winding_loss: float | None
-    temperature_rise: float | None
-    fails: str  # "" when it meets everything, else why not
-    limits: tuple = ()  # the limits it fails: "saturation", "bobbin", "gap", "temperature rise"
-
-    @property
-    def ok(self) -> bool:
-        return not self.fails
-
-    @property
-    def loss(self) -> float:
-        return (self.core_loss or 0.0) + (self.winding_loss or 0.0)
 
 
 @dataclass(frozen=True)
@@ -171,32 +149,6 @@ def checked(spec: dict | None) -> dict:
     return s
 
 
-def v_top(s: dict) -> float:
-    """The VCC2 at which the dump voltage V_L+ vanishes (eq 1): above it the converter need not switch."""
-    return s["v_out"] + s["v_regulator_drop"] + s["v_f"]
-
-
-def coil_voltages(s: dict, vcc: float) -> tuple[float, float]:
-    """Eq 1 and 2 at supply ``vcc``: (V_L+, V_L-)."""
-    return v_top(s) - vcc, vcc - s["v_ce_sat"] - s["v12h"]
-
-
-def frequency(s: dict, vcc: float, inductance: float, i_peak: float) -> float:
-    """The full-load switching frequency 1/(t1 + t2) = 1/(L I_peak (1/V_L- + 1/V_L+)) at supply ``vcc``
-    (0 where V_L+ has vanished: the dump never ends)."""
-    vl_plus, vl_minus = coil_voltages(s, vcc)
-    if vl_plus <= 0:
-        return 0.0
-    return 1 / (inductance * i_peak * (1 / vl_minus + 1 / vl_plus))
-
-
-def supplies(s: dict, n: int = SUPPLY_POINTS) -> list[float]:
-    """VCC2 from v_supply_min to v_supply_max (stopping just short of where V_L+ vanishes)."""
-    lo, hi = s["v_supply_min"], min(s["v_supply_max"], v_top(s) * (1 - 1e-6))
-    hi = max(hi, lo)
-    return [lo + (hi - lo) * k / (n - 1) for k in range(n)] if hi > lo else [lo]
-
-
 def operating_point(s: dict) -> dict:
     """Eq 1 to 6a (the source's functions), R1 fitted from its series, the peak currents at R1's tolerance,
     the inductance to wind (A_L's tolerance), the frequency range over the supply, and the triangle's rms
@@ -216,149 +168,6 @@ def operating_point(s: dict) -> dict:
     return {**op, "r1_part": r1_part, "i_peak_min": i_min, "i_peak_max": i_max, "l1_max": l_max, "l1_nominal": l_nom,
             "l1_min": l_min, "f_sw_min": min(f_slow), "f_sw_max": f_fast, "i_rms": i_max / math.sqrt(3),
             "duty": op["t1"] * s["f_min"]}
-
-
-def steinmetz_range(material: dict, f: float) -> tuple[dict, bool]:
-    """The Steinmetz range that covers f (else the nearest one) and whether f lies inside its span."""
-    ranges = material["steinmetz"]
-    for r in ranges:
-        if r["f_low"] <= f <= r["f_high"]:
-            return r, True
-    return (ranges[0] if f < ranges[0]["f_low"] else ranges[-1]), False
-
-
-def igse_density(material: dict, delta_b: float, f: float, duty: float) -> float:
-    """Core loss per volume (W/m^3) of a triangular flux swing delta_b (peak to peak, T) at f with rise
-    fraction ``duty``: the improved generalised Steinmetz equation (Venkatachalam et al., 2002)
-    P_v = k_i delta_b^beta f^alpha (D^(1-alpha) + (1-D)^(1-alpha)),
-    k_i = k / ((2 pi)^(alpha-1) 2^(beta-alpha) int_0^2pi |cos t|^alpha dt), with the temperature factor
-    ct0 - ct1 T + ct2 T^2 at :data:`T_LOSS`."""
-    r, _ = steinmetz_range(material, f)
-    a, b = r["alpha"], r["beta"]
-    cos_integral = 2 * math.sqrt(math.pi) * math.gamma((a + 1) / 2) / math.gamma(a / 2 + 1)
-    k_i = r["k"] / ((2 * math.pi) ** (a - 1) * 2 ** (b - a) * cos_integral)
-    temp = r["ct0"] - r["ct1"] * T_LOSS + r["ct2"] * T_LOSS ** 2
-    return k_i * delta_b ** b * f ** a * (duty ** (1 - a) + (1 - duty) ** (1 - a)) * temp
-
-
-def b_sat(material: dict, temperature: float) -> float:
-    """The material's saturation flux density at ``temperature`` (C): linear through its 25 C and 100 C
-    figures (PyOpenMagnetics gives those two), extended beyond them (never below 1 mT: far above the Curie
-    temperature the figure means only "saturated")."""
-    t0, t1 = converter_cores.T_ROOM, converter_cores.T_HOT
-    b0, b1 = material["b_sat_room"], material["b_sat_hot"]
-    return max(b0 + (b1 - b0) * (temperature - t0) / (t1 - t0), 1e-3)
-
-
-def core_reluctance(shape: dict, material: dict) -> float:
-    return shape["le"] / (MU0 * material["mu_i"] * shape["ae"])
-
-
-def gap_reluctance(shape: dict, gap: float) -> float:
-    """PyOpenMagnetics' reluctance of the gaps with a centre gap ``gap`` (log-log interpolation of the table)."""
-    xs, ys = shape["gap_lengths"], shape["gap_reluctance"]
-    k = min(max(1, next((i for i, x in enumerate(xs) if x >= gap), len(xs) - 1)), len(xs) - 1)
-    w = math.log(gap / xs[k - 1]) / math.log(xs[k] / xs[k - 1])
-    return math.exp(math.log(ys[k - 1]) + w * (math.log(ys[k]) - math.log(ys[k - 1])))
-
-
-def gap_for(shape: dict, reluctance: float) -> float | None:
-    """The centre gap whose gaps' reluctance is ``reluctance`` (the table inverted), None beyond the table."""
-    xs, ys = shape["gap_lengths"], shape["gap_reluctance"]
-    if reluctance > ys[-1]:
-        return None
-    k = min(max(1, next((i for i, y in enumerate(ys) if y >= reluctance), len(ys) - 1)), len(ys) - 1)
-    w = math.log(reluctance / ys[k - 1]) / math.log(ys[k] / ys[k - 1])
-    return math.exp(math.log(xs[k - 1]) + w * (math.log(xs[k]) - math.log(xs[k - 1])))
-
-
-def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tuple[float, list[float]]:
-    """The iGSE core loss (W) at the largest flux swing (L_max, I_peak,max), the largest over the supply range
-    at full load, and the frequencies it was evaluated at."""
-    delta_b = op["l1_max"] * op["i_peak_max"] / (turns * shape["ae"])
-    worst, freqs = 0.0, []
-    for v in supplies(s, 9):
-        vl_plus, vl_minus = coil_voltages(s, v)
-        f = frequency(s, v, op["l1_max"], op["i_peak_max"])
-        if f <= 0:
-            continue
-        freqs.append(f)
-        duty = vl_plus / (vl_plus + vl_minus)  # t1 / (t1 + t2)
-        worst = max(worst, igse_density(material, delta_b, f, duty) * shape["ve"])
-    return worst, freqs
-
-
-def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | None = None) -> Coil:
-    """One candidate core, wound and costed (see the module's description)."""
-    table = table or converter_cores.load()
-    shape, material = table["shapes"][shape_name], table["materials"][material_name]
-    l_nom, flux_n = op["l1_nominal"], op["l1_max"] * op["i_peak_max"]  # flux_n = N x peak flux
-    r_core = core_reluctance(shape, material)
-    n_gap = math.sqrt(l_nom * (r_core + gap_reluctance(shape, GAP_MIN)))
-    b_allowed = lambda t: (1 - s["saturation_margin_min"]) * b_sat(material, t)  # noqa: E731
-    n_for = lambda t: math.ceil(max(n_gap, flux_n / (b_allowed(t) * shape["a_min"])) * (1 - 1e-12))  # noqa: E731
-    n_hi = n_for(s["t_ambient"] + s["temperature_rise_max"])  # enough at the hottest the rise allows
-    # the fewest turns that hold the margin at the coil's own temperature: from the ambient's count up, each
-    # step to the count the last one's temperature asks for (the count only grows; at most n_hi)
-    n = max(1, n_for(s["t_ambient"]))
-    for _ in range(50):
-        wound = wind(shape_name, material_name, s, op, n, table)
-        if "saturation" not in wound.limits or n >= n_hi:
-            return wound
-        n = min(max(n + 1, n_for(s["t_ambient"] + wound.temperature_rise)), n_hi)
-    return wound
-
-
-def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: dict | None = None) -> Coil:
-    """The candidate wound with ``n`` turns: gap, flux, wire, losses, rise, and the limits it fails."""
-    table = table or converter_cores.load()
-    shape, material = table["shapes"][shape_name], table["materials"][material_name]
-    r_core = core_reluctance(shape, material)
-    t_cu = s["t_ambient"] + s["temperature_rise_max"]  # copper at the hottest the rise allows
-    copper = (1 + ALPHA_CU * (t_cu - 20)) / (1 + ALPHA_CU * (T_WIRE_TABLE - 20))
-    gap = gap_for(shape, n * n / op["l1_nominal"] - r_core)
-    flux = op["l1_max"] * op["i_peak_max"] / n
-    b_centre, b_narrow = flux / shape["a_centre"], flux / shape["a_min"]
-    fails, limits = [], []
-    if gap is None:
-        fails.append(f"the gap for {n} turns is longer than {shape['gap_lengths'][-1] * 1e3:.3g} mm")
-        limits.append("gap")
-    elif gap < GAP_MIN * (1 - 1e-6):
-        fails.append(f"the gap for {n} turns is {gap * 1e6:.3g} um, below {GAP_MIN * 1e6:g} um")
-        limits.append("gap")
-    fitting = [w for w in table["wires"] if n * w["d_outer"] ** 2 <= s["fill_factor"] * shape["window_area"]]
-    base = dict(shape=shape_name, material=material_name, ve=shape["ve"], turns=n, gap=gap, a_l=op["l1_nominal"] / n ** 2,
-                b_peak=b_centre, b_peak_min_area=b_narrow)
-    if not fitting:
-        sat = b_sat(material, s["t_ambient"])
-        return Coil(**base, b_sat=sat, saturation_margin=1 - b_narrow / sat, wire=None, wire_diameter=None,
-                    current_density=None, r_dc=None, core_loss=None, winding_loss=None, temperature_rise=None,
-                    fails="; ".join([*fails, f"{n} turns of even the thinnest wire do not fit the bobbin"]),
-                    limits=(*limits, "bobbin"))
-    wire = fitting[-1]
-    r_dc = n * shape["mlt"] * wire["r_per_m_hot"] * copper
-    p_cu = op["i_rms"] ** 2 * r_dc
-    p_core, _ = core_loss(material, shape, s, op, n)
-    rise = shape["r_th"] * (p_cu + p_core)
-    sat = b_sat(material, s["t_ambient"] + rise)
-    margin = 1 - b_narrow / sat
-    if margin < s["saturation_margin_min"] * (1 - 1e-9):
-        fails.append(f"{margin:.1%} of saturation left at {s['t_ambient'] + rise:.3g} C, below "
-                     f"{s['saturation_margin_min']:.0%}")
-        limits.append("saturation")
-    if rise > s["temperature_rise_max"]:
-        fails.append(f"it rises {rise:.3g} K, above {s['temperature_rise_max']:g} K")
-        limits.append("temperature rise")
-    return Coil(**base, b_sat=sat, saturation_margin=margin, wire=wire["name"], wire_diameter=wire["d_cu"],
-                current_density=op["i_rms"] / (math.pi * wire["d_cu"] ** 2 / 4), r_dc=r_dc, core_loss=p_core,
-                winding_loss=p_cu, temperature_rise=rise, fails="; ".join(fails), limits=tuple(limits))
-
-
-def candidates(s: dict, op: dict) -> list[Coil]:
-    """Every candidate core wound for this spec, smallest effective volume first (ties: least loss)."""
-    table = converter_cores.load()
-    out = [coil(sh, m, s, op, table) for sh in table["shapes"] for m in table["materials"]]
-    return sorted(out, key=lambda c: (c.ve, c.loss if c.ok else math.inf, c.shape, c.material))
 
 
 def choose(s: dict) -> tuple[dict, list[Coil], Coil | None]:

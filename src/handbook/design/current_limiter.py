@@ -163,9 +163,12 @@ def _root(s: dict, relax: Relaxation, lists: list) -> float | None:
     """The relaxation's smallest R7 with every margin >= min_margin (None: no continuous network does)."""
     lb, ub = np.array([v[0] for v in lists]), np.array([v[-1] for v in lists])
     res = relax.solve(lb, ub, [*np.log(np.sqrt(lb * ub)), 0.0], 1.0, s["min_margin"])
-    if res is None or res[1] not in ("Solve_Succeeded", "Solved_To_Acceptable_Level"):
-        return None
-    return math.exp(res[0][0])
+    if res is not None and res[1] in ("Solve_Succeeded", "Solved_To_Acceptable_Level") and math.isfinite(res[0][0]):
+        return math.exp(res[0][0])
+    # IPOPT found no point: a local verdict, not a proof. The bound is then the smallest R7 whose exact vertex
+    # bound over the whole divider box still allows the margin (None only when none does)
+    ok = [r7 for r7 in lists[0] if vertex_bound(float(r7), lb[1:], ub[1:], s) >= s["min_margin"] - 1e-12]
+    return float(ok[0]) if ok else None
 
 
 def polish(r7: float, network: tuple, s: dict, lists: list, rounds: int = 8) -> tuple[tuple, float]:
