@@ -116,6 +116,7 @@ class ConverterResult(Result):
     a_l: float
     wire: str
     b_peak: float
+    b_peak_min_area: float
     core_loss: float
     winding_loss: float
     temperature_rise: float
@@ -216,6 +217,12 @@ def _frequency_that_works(s: dict) -> float | None:
     return _bisect(pred, good, bad)
 
 
+def _to_figures(x: float, rounding, figures: int = 4) -> float:
+    """``x`` to ``figures`` significant figures, rounded by ``rounding`` (math.floor or math.ceil)."""
+    scale = 10.0 ** (math.floor(math.log10(abs(x))) - figures + 1)
+    return rounding(x / scale) * scale
+
+
 def infeasible(s: dict, every: list[Coil]) -> Infeasible:
     """Nothing in the candidate set meets the spec: what would (a lower current, a higher frequency),
     and which candidate comes nearest (the way to a larger core family)."""
@@ -225,10 +232,13 @@ def infeasible(s: dict, every: list[Coil]) -> Infeasible:
     f_ok = _frequency_that_works(s)
     largest = max(every, key=lambda c: (c.ve, -c.loss))
     why = largest.fails
-    parts = [f"no core of the candidate set (P 9/5 .. P 26/16, RM 4 .. RM 10, EP 7 .. EP 20, E 13 .. E 25, "
+    parts = [f"no core of the candidate set (P 7.4 .. P 26/16, RM 4 .. RM 10, EP 7 .. EP 20, E 8.3 .. E 25, "
              f"EFD 10 .. EFD 25 in 3C90 and N87) holds L1 at the peak current with a "
              f"{s['saturation_margin_min']:.0%} saturation margin within {s['temperature_rise_max']:g} K: "
              f"the largest, {largest.shape} in {largest.material}, fails: {why}"]
+    # shown to four figures, rounded the safe way (a current down, a frequency up), so a value copied back works
+    i_ok = _to_figures(i_ok, math.floor) if i_ok is not None else None
+    f_ok = _to_figures(f_ok, math.ceil) if f_ok is not None else None
     if i_ok is not None:
         parts.append(f"i_out up to {eng(i_ok, 'A')} can be met at f_min = {eng(s['f_min'], 'Hz')}")
     if f_ok is not None:
@@ -320,7 +330,7 @@ def design(spec: dict | None = None) -> ConverterResult:
         l1_max=op["l1_max"], f_sw_min=op["f_sw_min"], f_sw_max=op["f_sw_max"],
         vl_plus=op["vl_plus"], vl_minus=op["vl_minus"], i_rms=op["i_rms"],
         core_shape=chosen.shape, core_material=chosen.material, turns=chosen.turns, gap=chosen.gap, a_l=chosen.a_l,
-        wire=chosen.wire, b_peak=chosen.b_peak, core_loss=chosen.core_loss, winding_loss=chosen.winding_loss,
+        wire=chosen.wire, b_peak=chosen.b_peak, b_peak_min_area=chosen.b_peak_min_area, core_loss=chosen.core_loss, winding_loss=chosen.winding_loss,
         temperature_rise=chosen.temperature_rise, saturation_margin=chosen.saturation_margin,
         binding=binding(every, chosen), coil=chosen, candidates=tuple(every),
         next_smaller=smaller[-1] if smaller else None, warnings=tuple(warnings(s, op, chosen)))

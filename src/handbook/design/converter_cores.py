@@ -41,10 +41,10 @@ GAP_GRID = tuple(10e-6 * (5e-3 / 10e-6) ** (k / 60) for k in range(61))
 GAP_MODEL = "ZHANG"
 
 #: shape families a small board coil of a few hundred uH at a few hundred mA uses, smallest to largest
-SHAPES = ("P 9/5", "P 11/7", "P 14/8", "P 18/11", "P 22/13", "P 26/16",
+SHAPES = ("P 7.4/4.0", "P 9/5", "P 11/7", "P 14/8", "P 18/11", "P 22/13", "P 26/16",
           "RM 4", "RM 5", "RM 6", "RM 7", "RM 8", "RM 10",
           "EP 7", "EP 10", "EP 13", "EP 17", "EP 20",
-          "E 13/7/4", "E 16/8/5", "E 20/10/6", "E 25/13/7",
+          "E 8.3/4", "E 13/7/4", "E 16/8/5", "E 20/10/6", "E 25/13/7",
           "EFD 10/5/3", "EFD 15/8/5", "EFD 20/10/7", "EFD 25/13/9")
 #: MnZn power ferrites for 25..200 kHz, one from each of two makers
 MATERIALS = ("3C90", "N87")

@@ -355,6 +355,7 @@ OUTPUTS: dict[str, tuple[Output, ...]] = {
         Output("gap", "m", "centre-column gap (PyOpenMagnetics' gap model)"),
         Output("a_l", "H", "A_L (inductance per turn squared, nominal)"), Output("wire", "", "wire"),
         Output("b_peak", "T", "peak flux density, centre column (highest peak current)"),
+        Output("b_peak_min_area", "T", "peak flux density, narrowest section (the one saturation is judged at)"),
         Output("core_loss", "W", "core loss (iGSE)"),
         Output("winding_loss", "W", "winding loss (I_rms^2 R_dc, copper at its hottest)"),
         Output("temperature_rise", "K", "temperature rise"),

@@ -315,7 +315,8 @@ def watchdog(p: dict | None = None) -> Circuit:
         Check("wd-stalled-cycle", "stalled cycle: up to 2.2 V and back to 0.2 V", "s", t_s[3], "t_end", 0.005, step,
               kind="sanity"),
         Check("wd-recovered-cycle", "cycle with the EMF recovering half-way up the ramp", "s", t_r[3], "rec_cycle",
-              0.01, step + "; its discharge ends 2 mV above 0.2 V, where the clamp begins", kind="sanity"))
+              0.005, step + "; its discharge ends 2 mV above 0.2 V, where the clamp begins (about 0.03 % of the "
+              "cycle)", kind="sanity"))
     return Circuit("cap-ti", "CAP-TI watchdog", "AN94002 2.1.3, figure 5; TDA5144 datasheet", parts,
                    "\n".join(lines) + "\n", checks, draw=lambda: draw_timer(parts, "CAP-TI"))
 
