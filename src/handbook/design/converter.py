@@ -330,7 +330,8 @@ def design(spec: dict | None = None) -> ConverterResult:
         l1_max=op["l1_max"], f_sw_min=op["f_sw_min"], f_sw_max=op["f_sw_max"],
         vl_plus=op["vl_plus"], vl_minus=op["vl_minus"], i_rms=op["i_rms"],
         core_shape=chosen.shape, core_material=chosen.material, turns=chosen.turns, gap=chosen.gap, a_l=chosen.a_l,
-        wire=chosen.wire, b_peak=chosen.b_peak, b_peak_min_area=chosen.b_peak_min_area, core_loss=chosen.core_loss, winding_loss=chosen.winding_loss,
+        wire=chosen.wire, b_peak=chosen.b_peak, b_peak_min_area=chosen.b_peak_min_area, core_loss=chosen.core_loss,
+        winding_loss=chosen.winding_loss,
         temperature_rise=chosen.temperature_rise, saturation_margin=chosen.saturation_margin,
         binding=binding(every, chosen), coil=chosen, candidates=tuple(every),
         next_smaller=smaller[-1] if smaller else None, warnings=tuple(warnings(s, op, chosen)))
