@@ -162,3 +162,9 @@ def test_empirical_equations_say_so_and_filter():
     assert {r["id"] for r in only} == empirical
     differs = json.loads(_run_any(100, "equations", "--status", "differs", "--json")[0])
     assert {r["id"] for r in differs} == {r["id"] for r in rows if not r["agrees"] and not r["empirical"]}
+
+
+def test_a_source_matching_nothing_is_a_usage_error():
+    out = subprocess.run([sys.executable, "-m", "handbook", "examples", "--source", "bogus"], capture_output=True,
+                         text=True)
+    assert out.returncode == 2 and "matches no entry" in out.stderr and "AN94002" in out.stderr

@@ -19,7 +19,12 @@ def _filtered(rows: list[dict], args, status_of, statuses) -> list[dict]:
     """Rows whose source contains --source (any case) and whose status is --status (any case); a --status
     that is none of ``statuses`` (nor of the rows' own) raises _BadStatus naming the valid ones."""
     if args.source:
+        every = rows
         rows = [r for r in rows if args.source.lower() in (r["source"] + " " + r["id"]).lower()]
+        if not rows:
+            docs = sorted({r["source"].split()[0].rstrip(",") for r in every})
+            raise _BadStatus(f"--source {args.source!r} matches no entry of `{args.command}`; "
+                             f"the documents are {', '.join(docs)}")
     if args.status:
         valid = list(dict.fromkeys([*statuses, *(status_of(r) for r in rows)]))
         if args.status.lower() not in valid:

@@ -20,12 +20,13 @@ _PREFIXES = ((1e12, "T"), (1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, 
 
 def quantity(value, unit: str = "") -> str:
     """A value as a message shows it: '50 MHz', '1 kHz', '-1 A', '12 µH' for SI units, '0.05' for a fraction,
-    '1e+06 rpm' for others (the number to 4 significant figures)."""
+    '1,000,000 rpm' for others (the number to 4 significant figures)."""
     v = float(value)
     if unit in _PREFIXED and v != 0 and math.isfinite(v):
         scale, prefix = next(((f, p) for f, p in _PREFIXES if abs(v) >= f * (1 - 5e-5)), _PREFIXES[-1])
         return f"{v / scale:.4g} {prefix}{_PREFIXED[unit]}"
-    return f"{v:.4g}" + ("" if unit in ("", "1") else f" {_PREFIXED.get(unit, unit)}")
+    text = f"{v:,.0f}" if 1e4 <= abs(v) < 1e15 and v == round(v) else f"{v:.4g}"  # 1,000,000 rpm, not 1e+06
+    return text + ("" if unit in ("", "1") else f" {_PREFIXED.get(unit, unit)}")
 
 
 def range_text(low: float | None, high: float | None, low_open: bool = False, unit: str = "") -> str:

@@ -111,10 +111,31 @@ def design_table(table_name: str, result) -> Markdown:
     from ..design.solvers import Infeasible
 
     if isinstance(result, Infeasible):
-        extra = "; ".join(f"{k} = {v:.4g}" if isinstance(v, float) else f"{k} = {v}" for k, v in result.achievable.items())
-        return Markdown(f"**Cannot be met** (`{table_name}`): {result}  \nWhat can be met: {extra}")
+        extra = "; ".join(achievable_text(table_name, k, v) for k, v in result.achievable.items() if v is not None)
+        return Markdown(f"**Cannot be met** (`{table_name}`): {result}  \nWhat can be met: {extra or 'nothing nearby'}")
     rows = [[out.label, shown_value(getattr(result, out.key), out.unit)] for out in OUTPUTS[table_name]]
     return table(["result", "value"], rows)
+
+
+#: units of the "what can be met" figures that are not design outputs, by how their key begins or ends
+_ACHIEVABLE_UNITS = (("ratio", "1"), ("margin", "%"), ("rpm", "rpm"), ("cap", "F"), ("r7", "ohm"), ("i_", "A"),
+                     ("f_", "Hz"), ("p_", "W"), ("theta", "K/W"), ("t_", "C"))
+
+
+def achievable_text(table_name: str, key: str, value) -> str:
+    """One "what can be met" figure as a person reads it: its label and its value with its unit."""
+    from ..design.schema import OUTPUTS
+
+    out = next((o for o in OUTPUTS.get(table_name, ()) if o.key == key), None)
+    if out is not None:
+        return f"{out.label} {shown_value(value, out.unit)}"
+    label = key.replace("_", " ")
+    if isinstance(value, str) or not isinstance(value, (int, float)):
+        return f"{label}: {value}"
+    unit = next((u for part, u in _ACHIEVABLE_UNITS if part in key), "")
+    if isinstance(value, float) and unit == "1":
+        return f"{label} {value:.4g}"
+    return f"{label} {shown_value(value, unit)}"
 
 
 def shown_value(v, unit: str) -> str:

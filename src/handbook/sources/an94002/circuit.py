@@ -78,6 +78,13 @@ def rpm_ratio(window, min_excursion, i_charge_min, i_charge_max):
     return window * i_charge_min / (min_excursion * i_charge_max)
 
 
+def eng(value: float, unit: str) -> str:
+    """An engineering value with its unit, as the chapters show it (654.8 pF, 14.55 nF)."""
+    from ...report.tables import eng as _eng
+
+    return _eng(value, unit)
+
+
 def choose_cap_cd(rpm_min, pole_pairs, i_charge_max, window, tolerance=0.05, series_name="E12"):
     """The smallest series value that meets the bound at its low tolerance end.
 
@@ -88,10 +95,10 @@ def choose_cap_cd(rpm_min, pole_pairs, i_charge_max, window, tolerance=0.05, ser
     rejected = {}
     for v in series.values(series_name, chosen / 3, chosen * 0.999):
         if v * (1 - tolerance) < bound <= v:
-            rejected[v] = (f"meets the nominal bound {bound * 1e9:.2f} nF but not at -{tolerance:.0%}: "
-                           f"{v * (1 - tolerance) * 1e9:.2f} nF")
+            rejected[v] = (f"meets the nominal bound {eng(bound, 'F')} but not at -{tolerance:.0%}: "
+                           f"{eng(v * (1 - tolerance), 'F')}")
         elif v < bound:
-            rejected[v] = f"below the bound {bound * 1e9:.2f} nF"
+            rejected[v] = f"below the bound {eng(bound, 'F')}"
     return chosen, bound, rejected
 
 
