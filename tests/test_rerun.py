@@ -25,7 +25,7 @@ FAN = "[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n" \
 # "Design your own" run on a spec, covered by its entry)
 RERUNS = {
     "an93008/current_limiter": {"v_supply": 24.0, "r8": 15e3, "v_cs": 0.2},
-    "an94002/commutation_delay": {"pole_pairs": 4, "rpm_min": 900.0},
+    "an94002/commutation_delay": {"pole_pairs": 4, "rpm_min": 900.0, "i_charge_max": 11e-6, "i_charge_min": 5.3e-6},
     "an94002/grounding_decoupling": {"z_max": 1.0, "f_decoupling": 1e6, "c2": 4.7e-6, "esr": 0.3},
     "an94002/one_transistor_limiter": {"i_limit": 0.5, "v_be": 0.7},
     "an94002/opamp_limiter": {"resistor_tolerance": 0.001, "v_cs": 0.2},
@@ -46,6 +46,7 @@ RERUNS = {
 # sentences that state a value equal to an input's note value on purpose: the value is fixed there, whatever
 # the parameters cell holds (chapter -> (token, a phrase of the sentence, why))
 FIXED = {
+    "an94002/commutation_delay": [("22 µA", "CAP-CD table lists a discharge", "the datasheet's own column, quoted")],
     "design/current_limiter": [("1.8002 A", "The earlier version of this design fixed the corner",
                                 "a counterexample to an earlier version, at the default spec, named as such")],
     "lm4651/equations": [("4 Ω", "SPICE puts the corner", "the simulation runs both loads, 4 and 8 ohm, always"),
@@ -189,7 +190,7 @@ BASES = ("F", "Ω", "A", "V", "s", "Hz", "W", "H", "rpm", "%", "K/W", "°C", "K"
 PREFIXES = {"p": 1e-12, "n": 1e-9, "µ": 1e-6, "u": 1e-6, "m": 1e-3, "k": 1e3, "M": 1e6}
 _UNIT_WORDS = sorted({b for b in BASES} | {p + b for p in PREFIXES for b in ("F", "Ω", "A", "V", "s", "Hz", "W", "H",
                                                                              "m", "T")} | {"k"}, key=len, reverse=True)
-TOKEN = re.compile(r"(?<![\w.])([-+−]?\d+(?:[.,]\d+)?)[ \u00a0]?(" + "|".join(map(re.escape, _UNIT_WORDS))
+TOKEN = re.compile(r"(?<![\w.,])([-+−]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?)[ \u00a0-]?(" + "|".join(map(re.escape, _UNIT_WORDS))
                    + r")(?![\w/])")
 # a value the sentence gives as the source's own: attributed just before it, or quoted
 ATTRIBUTED = re.compile(r"(note's|notes'|printed|prints|datasheet's|the datasheet|AN9400\d|AN93008|Example Design|"
@@ -200,7 +201,7 @@ ATTRIBUTED_AFTER = re.compile(r"^\W*(\w+\W+){0,2}(example|as printed)\b", re.IGN
 
 def unit_si(number: str, unit: str) -> tuple[str, float] | None:
     """('F', 1.8e-08) for ('18', 'nF'); 'k' alone is kilohm, as the notes write it; None for a non-unit."""
-    value = float(number.replace("−", "-").replace(",", "."))
+    value = float(number.replace("−", "-").replace(",", ""))
     if unit == "k":
         return "Ω", value * 1e3
     if unit in BASES:
@@ -245,7 +246,7 @@ def stated(static: list[str], fixed=()) -> list[tuple[str, float, str, str]]:
 def _written_as(token: str, typed: float, value: float) -> bool:
     """Whether ``token`` (typed = its SI value) writes ``value``: exactly, or rounded to the token's digits when it
     has two or more significant ones (14.6 nF writes 14.55 nF; 2 V does not write 1.997 V)."""
-    number = TOKEN.match(token).group(1).replace("−", "-").replace(",", ".")
+    number = TOKEN.match(token).group(1).replace("−", "-").replace(",", "")
     if float(number) == 0 or value == 0:
         return typed == value
     scale = typed / float(number)
@@ -325,13 +326,17 @@ def _glued(nb_path):
     return out, "\n".join(tables)
 
 
-def test_commutation_chapter_with_a_four_pole_pair_motor(tmp_path_factory):
-    assert RERUNS["an94002/commutation_delay"] == {"pole_pairs": 4, "rpm_min": 900.0}
+def test_commutation_chapter_with_a_four_pole_pair_motor_and_the_datasheets_currents(tmp_path_factory):
+    assert RERUNS["an94002/commutation_delay"] == {"pole_pairs": 4, "rpm_min": 900.0, "i_charge_max": 11e-6,
+                                                   "i_charge_min": 5.3e-6}
     g, tables = _glued(rerun("an94002/commutation_delay", tmp_path_factory))
-    bound = 22e-6 * 10 / (900 * 4 * 1.4)  # farads, worked by hand
+    bound = 11e-6 * 10 / (900 * 4 * 1.4)  # farads, worked by hand: 21.83 nF
     assert g["bound_nF"] == pytest.approx(bound * 1e9, rel=1e-9)
-    assert g["c3_nF"] == pytest.approx(47.0)  # E12: 39 nF x 0.95 = 37.05 nF < 43.65 nF; 47 nF x 0.95 = 44.65 nF
-    assert g["rpm_lo"] == pytest.approx(10 * 22e-6 / (1.4 * 4 * 47e-9 * 0.95), rel=1e-9)
+    assert g["c3_nF"] == pytest.approx(27.0)  # E12: 22 nF x 0.95 = 20.9 nF < 21.83 nF; 27 nF x 0.95 = 25.65 nF
+    assert g["rpm_lo"] == pytest.approx(10 * 11e-6 / (1.4 * 4 * 27e-9 * 0.95), rel=1e-9)
+    # eq 6's constant with 11 uA is 78.57 uF rpm: the note's 160 is about twice it, not a rounding of it
+    assert g["const"] == pytest.approx(10 * 11e-6 / 1.4 * 1e6, rel=1e-9)
+    assert "times it: conservative, by more than a rounding" in g["round_160"]
     # the note's printed bound no longer applies; numbers that do not depend on the motor still compare
     # (and its row shows no recomputed value: one for the reader's motor would stand under the note's label)
     assert "| CAP-CD lower bound for 1800 rpm, 6 pole pairs | 0.0148 uF | — | n/a |" in tables

@@ -43,8 +43,9 @@ def rows(result: dict) -> list[dict]:
         ("L1, L2", cd.l_out, sd["l_tolerance"], sd["l_series"],
          f"bridge output filter, one per output; saturation {sd['i_sat']:g} A or more"),
         ("C_BYP", cd.c_out, sd["c_tolerance"], sd["c_series"], "bridge output filter across the load, film"),
-        ("heat sink", cd.theta_sa_required, 0.0, "K/W",
-         f"LM4652 heat sink of {cd.theta_sa_required:.2f} K/W or better: T_j {cd.t_junction:.0f} C at worst"),
+        ("heat sink", cd.theta_sa_required, None, "",
+         f"LM4652 heat sink of {cd.theta_sa_required:.2f} K/W or better (thermal resistance, sink to air): T_j "
+         f"{cd.t_junction:.0f} °C at worst"),
         *converter_rows(cv),
     ]
     return [{"reference": r, "value": v, "value_text": readable(r, v, ser), "tolerance": t, "series": ser, "reason": why}
@@ -73,7 +74,7 @@ def converter_rows(cv) -> list[tuple]:
     ]
 
 
-#: the unit of each reference's value, by its first letter (the heat sink's is in its series column)
+#: the unit of each reference's value, by its first letter (the heat sink's is K/W)
 _UNITS = {"C": "F", "R": "ohm", "L": "H", "D": "V"}
 
 
@@ -81,7 +82,7 @@ def readable(ref: str, value: float, series: str) -> str:
     """The value as a person reads it: 18 nF, 1.21 kΩ, 100 µH, 8.2 V (zener), 0.68 K/W."""
     from ..report.tables import eng
 
-    if series == "K/W":
+    if ref == "heat sink":
         return f"{value:.3g} K/W"
     unit = _UNITS.get(ref[0], "")
     return eng(value, unit.replace("ohm", "Ω")) if unit else f"{value:g}"
