@@ -170,19 +170,31 @@ def cmd_design(args) -> int:
 
 
 def _print_designs(out: dict, failed: dict) -> None:
+    from .cli_text import width, wrap
     from .design.schema import OUTPUTS
     from .report.tables import shown_value
 
-    lw = min(60, max(len(o.label) for outs in OUTPUTS.values() for o in outs))
+    total = width()
+    lw = min(60, total // 2 - 4, max(len(o.label) for outs in OUTPUTS.values() for o in outs))
+    vw = max(16, total - lw - 4)
+
+    def line(label: str, value: str) -> None:
+        """A label and its value, both wrapped at words to fit the terminal (the value in its column)."""
+        labels, values = wrap(label, lw), wrap(value, vw)
+        for k in range(max(len(labels), len(values))):
+            left = labels[k] if k < len(labels) else ""
+            print(f"  {left.ljust(lw)}  {values[k] if k < len(values) else ''}".rstrip())
+
     for table in OUTPUTS:
         print(f"[{table}]")
         if table in failed:
-            print(f"  cannot be met: {failed[table]}")
+            for text in wrap(f"cannot be met: {failed[table]}", total - 2):
+                print(f"  {text}")
             continue
         for o in OUTPUTS[table]:
-            print(f"  {o.label.ljust(lw)}  {shown_value(out[table][o.key], o.unit)}")
+            line(o.label, shown_value(out[table][o.key], o.unit))
         for key, value in out[table].get("spice", {}).items():
-            print(f"  SPICE: {key:38s} {_spice_value(key, value)}")
+            line(f"SPICE: {key}", _spice_value(key, value))
 
 
 def _spice_value(key: str, value) -> str:

@@ -115,3 +115,16 @@ def test_help_is_plain_text():
     out = subprocess.run([sys.executable, "-m", "handbook", "design", "--help"], capture_output=True, text=True,
                          timeout=60)
     assert out.returncode == 0 and "``" not in out.stdout and ":mod:" not in out.stdout and "--template" in out.stdout
+
+
+@pytest.mark.parametrize("columns", [80, 120])
+def test_text_output_fits_the_terminal(columns):
+    import os
+    from pathlib import Path
+
+    spec = Path(__file__).resolve().parents[2] / "book" / "examples" / "fan_motor.toml"
+    out = subprocess.run([sys.executable, "-m", "handbook", "design", str(spec)], capture_output=True, text=True,
+                         timeout=60, env={**os.environ, "COLUMNS": str(columns)})
+    assert out.returncode == 0 and "[converter]" in out.stdout
+    assert max(len(line) for line in out.stdout.splitlines()) <= columns
+    assert "e+0" not in out.stdout and "e-0" not in out.stdout  # no scientific notation for a person to read
