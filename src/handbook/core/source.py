@@ -64,16 +64,13 @@ class Param:
 
     @property
     def range_text(self) -> str:
-        """'> 0 and <= 1e+06 rpm', 'from 0 to 0.1 V', or the choices."""
+        """'> 0 rpm and <= 1,000,000 rpm', 'from 0 V to 100 mV', 'from 1 kHz to 1 MHz', or the choices: the
+        engineering values the error messages also use."""
+        from .validate import range_text
+
         if self.choices:
             return "one of " + ", ".join(map(repr, self.choices))
-        if self.low is None and self.high is None:
-            return "(any)"
-        lo = None if self.low is None else (f"> {self.low:g}" if self.low_open else f">= {self.low:g}")
-        hi = None if self.high is None else f"<= {self.high:g}"
-        if lo and hi and not self.low_open:
-            return f"from {self.low:g} to {self.high:g}{self.unit_text}"
-        return " and ".join(x for x in (lo, hi) if x) + self.unit_text
+        return range_text(self.low, self.high, self.low_open, "" if self.unit == "1" else self.unit)
 
 
 @dataclass(frozen=True)
