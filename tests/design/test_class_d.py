@@ -181,7 +181,7 @@ def test_implausible_designs_still_design_with_warnings():
 
 
 def test_bad_input_names_key_value_and_range():
-    with pytest.raises(InputError, match=r"class_d.supply = 10.*from 11 to 22"):
+    with pytest.raises(InputError, match=r"class_d.supply = 10.*from 11 V to 22 V"):
         class_d.checked({"supply": 10.0})
     with pytest.raises(InputError, match="class_d.objective"):
         class_d.checked({"objective": "cost"})
