@@ -143,8 +143,7 @@ def confirm_table(table: str, result):
     difference, the tolerance and the verdict, with each tolerance's reason below; or why it was skipped."""
     from IPython.display import Markdown
 
-    from ..report.tables import eng
-    from ..report.tables import table as md_table
+    from .circuit import rows_table
 
     try:
         rows = confirm_rows(table, result)
@@ -152,13 +151,7 @@ def confirm_table(table: str, result):
         return Markdown(f"*SPICE check skipped: {exc}.*")
     except SpiceError as exc:
         return Markdown(f"**SPICE run failed:** {exc}.")
-    body = md_table(["quantity", "design (equations)", "SPICE", "difference", "tolerance", "verdict"],
-                    [[r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
-                      f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"±{r['rtol'] * 100:.2g} %",
-                      r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
-    why = "\n".join(f"- *{r['quantity']}*" + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity"
-                                              else "") + f": {r['why']}." for r in rows)
-    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)
+    return rows_table(rows, equation_head="design (equations)")
 
 
 __all__ = ["CONFIRM", "SpiceError", "SpiceUnavailable", "available", "circuits", "confirm", "confirm_rows", "judged", "rows",

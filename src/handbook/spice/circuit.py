@@ -106,7 +106,6 @@ def chapter_table(*circuits, by_circuit: bool | None = None):
     LM4651 filter with 4 and 8 ohm, AC and transient)."""
     from IPython.display import Markdown
 
-    from ..report.tables import eng, table
     from .runner import SpiceError, SpiceUnavailable
 
     try:
@@ -117,12 +116,24 @@ def chapter_table(*circuits, by_circuit: bool | None = None):
         return Markdown(f"**SPICE run failed:** {exc}.")
     titles = {c.id: c.title for c in circuits}
     first = (len(circuits) > 1) if by_circuit is None else by_circuit
-    lead = ["circuit"] if first else []
-    body = table([*lead, "quantity", "equation", "SPICE", "difference", "tolerance", "verdict"],
-                 [[*([titles[r["circuit"]]] if first else []), r["quantity"], eng(r["equation"], r["unit"]),
-                   eng(r["spice"], r["unit"]), f"{(r['spice'] - r['equation']) / r['equation']:+.2%}",
-                   _tolerance(r["rtol"]), r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
-    why = "\n".join(f"- {titles[r['circuit']] + ', ' if first else ''}*{r['quantity']}*, {_tolerance(r['rtol'])}"
+    return rows_table(rows, lead={r["circuit"]: titles[r["circuit"]] for r in rows} if first else None)
+
+
+def rows_table(rows: list[dict], equation_head: str = "equation", lead: dict | None = None):
+    """Check rows (as :func:`evaluate` or ``checks.confirm_rows`` give them) as the book shows them: quantity,
+    equation, SPICE, difference, tolerance, verdict, then each tolerance's reason. ``lead``: circuit id ->
+    title, for a first column naming each row's circuit."""
+    from IPython.display import Markdown
+
+    from ..report.tables import eng, table
+
+    name = (lambda r: [lead[r["circuit"]]]) if lead else (lambda r: [])
+    body = table([*(["circuit"] if lead else []), "quantity", equation_head, "SPICE", "difference", "tolerance",
+                  "verdict"],
+                 [[*name(r), r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
+                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", _tolerance(r["rtol"]),
+                   r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
+    why = "\n".join(f"- {''.join(t + ', ' for t in name(r))}*{r['quantity']}*, {_tolerance(r['rtol'])}"
                     + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity" else "")
                     + f": {r['why']}." for r in rows)
     return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)
