@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from ...core import Claim, Printed
+from ..an94002.claims_limiter import zener_spread as _zener_spread  # the same BZX79-C8V2 and datasheet facts
 from .circuit import b_for, factor_a, r10_for, supply_worst_case
 from .data import FACTS, NAME
 
@@ -32,12 +33,6 @@ def _resistor_only(p):
 def _drift_pct(p):
     """The zener drift over the temperature span, as a fraction of the note's 7.7 V."""
     return p["zener_tc"] * p["temp_span"] / VZ_MIN.si
-
-
-def _zener_spread(p):
-    """The BZX79-C8V2's datasheet spread about the nominal V_Z: the larger of its two sides, as a fraction."""
-    low, high = FACTS["bzx79_vz"].value
-    return max(p["v_zener"] - low, high - p["v_zener"]) / p["v_zener"]
 
 
 def build() -> list[Claim]:
