@@ -156,3 +156,14 @@ def assert_same_parts(circuit, aux: dict[str, str] = None, copies: dict[str, obj
 def assert_drawn_as_netlisted(circuit, aux: dict[str, str] = None, copies: dict[str, object] = None):
     """The older name of :func:`assert_same_parts`."""
     assert_same_parts(circuit, aux, copies)
+
+
+def assert_edit_caught(circuit, aux: dict[str, str], old: str, new: str, match: str) -> None:
+    """The netlist with ``old`` replaced by ``new`` (a changed value, a stray element) fails
+    :func:`assert_same_parts` with ``match``: the part-set test sees the edit."""
+    import dataclasses
+
+    edited = dataclasses.replace(circuit, netlist=circuit.netlist.replace(old, new))
+    assert edited.netlist != circuit.netlist, f"{old!r} is not in the netlist: the edit would test nothing"
+    with pytest.raises(AssertionError, match=match):
+        assert_same_parts(edited, aux)
