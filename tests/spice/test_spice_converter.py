@@ -46,7 +46,6 @@ def test_drawing_netlist_and_parts_are_one_set_both_ways(build):
 
 
 def test_the_part_set_test_sees_a_stray_element_and_a_wrong_value():
-
     c = converter.circuit()
     assert_edit_caught(c, AUX, "VC2 out 0", "RX out 0 1e6\nVC2 out 0", "RX")
     assert_edit_caught(c, AUX, "R1 e 0 0.68", "R1 e 0 0.82", "R1")
