@@ -23,10 +23,10 @@ book: $(STAMP)
 	if [ "$$(cat _build/.src-key 2>/dev/null)" != "$$key" ]; then rm -rf _build/.jupyter_cache _build/.doctrees; fi; \
 	$(BIN)/jupyter-book build . -W -n --keep-going && echo "$$key" > _build/.src-key
 
-# Unit tests and notebooks run side by side (one core each), each pytest's output kept together.
-# The notebooks (nbval, one kernel per notebook) run in one process, in order.
+# Unit tests and notebooks in one pytest on both cores (pytest-xdist): every test is scheduled on its own,
+# a notebook's cells (nbval, one kernel per notebook) stay together on one worker (conftest.py).
 test: $(STAMP) system
-	$(MAKE) --no-print-directory -j2 --output-sync=target test-unit test-notebooks
+	$(BIN)/python -m pytest -n 2 --dist loadscope tests book
 
 test-unit: $(STAMP)
 	$(BIN)/python -m pytest tests

@@ -1,0 +1,44 @@
+"""Both cores busy to the end (pytest-xdist, ``make test`` runs ``pytest -n 2 --dist loadscope``): the
+scheduler below sends every test on its own, except what must stay together on one worker:
+
+* a notebook's cells (nbval runs them in order in one kernel): one unit per notebook;
+* a test file whose module-scoped fixture is expensive (the browser check builds the book once, the
+  converter tests build the core table once): one unit per file, so the fixture is built once.
+
+The longest units go out first, so that neither worker is left with a long one at the end.
+(xdist's own ``--dist loadgroup`` marks do not take under pytest 9.2, whose node ids moved from
+``_nodeid`` to ``_id``; a scheduler of our own does not depend on that.)
+"""
+
+#: test files kept on one worker because their module-scoped fixture is expensive to build twice
+TOGETHER = ("tests/test_browser.py", "tests/design/test_converter.py", "tests/report/test_plots.py")
+#: units sent first, longest first (measured on the 2-core machine); the rest follow in collection order
+FIRST = ("tests/test_browser.py", "tests/design/test_current_limiter.py::test_branch_and_bound",
+         "tests/design/test_converter.py", "tests/design/test_current_limiter.py::test_every_design",
+         "tests/design/test_fuzz_specs.py")
+
+
+def _unit(nodeid: str) -> str:
+    path = nodeid.split("::", 1)[0]
+    return path if path.endswith(".ipynb") or path in TOGETHER else nodeid
+
+
+def _rank(unit: str) -> int:
+    return next((i for i, prefix in enumerate(FIRST) if unit.startswith(prefix)), len(FIRST))
+
+
+def pytest_xdist_make_scheduler(config, log):
+    from xdist.scheduler import LoadScopeScheduling
+
+    class Scheduling(LoadScopeScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            return _unit(nodeid)
+
+    config.option.loadscopereorder = False
+    return Scheduling(config, log)
+
+
+def pytest_collection_modifyitems(items):
+    """The order units are sent in: ``FIRST``, then collection order (stable, so a notebook's cells keep theirs;
+    every worker collects, and sorts, the same way)."""
+    items.sort(key=lambda item: _rank(_unit(item.nodeid)))
