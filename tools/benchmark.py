@@ -22,7 +22,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
 
-from handbook.design import class_d, commutation, current_limiter  # noqa: E402
+from handbook.design import class_d, commutation, limiter  # noqa: E402
 from handbook.design.solvers import Infeasible  # noqa: E402
 
 from oracles import enumerate_limiter, limiter_corners  # noqa: E402
@@ -70,7 +70,7 @@ def limiter_network(cases: int = 200) -> dict:
         t_enum.append(time.perf_counter() - t)
         t = time.perf_counter()
         try:
-            got = current_limiter.design(spec)
+            got = limiter.design(spec)
         except Infeasible:
             got = None
         t_bb.append(time.perf_counter() - t)
@@ -80,13 +80,13 @@ def limiter_network(cases: int = 200) -> dict:
             continue
         feasible += 1
         worst = min(got.margin_low, got.margin_high)
-        ok = got.r7 == expected[0] and expected[2] - current_limiter.GAP - 1e-9 <= worst <= expected[2] + 1e-9
+        ok = got.r7 == expected[0] and expected[2] - limiter.GAP - 1e-9 <= worst <= expected[2] + 1e-9
         same += ok
         feasible_same += ok
         same_net += got.r7 == expected[0] and got.network == expected[1]
     # the full E96 default: the branch and bound timed; the enumeration timed on a sample and extrapolated
-    s = current_limiter.checked({})
-    lists = [current_limiter.choices(s, n) for n in current_limiter.RESISTORS]
+    s = limiter.checked({})
+    lists = [limiter.model.choices(s, n) for n in limiter.model.RESISTORS]
     networks = math.prod(len(v) for v in lists[1:])
     sample = [rng.choice(v, 20_000) for v in lists[1:]]
     t = time.perf_counter()
@@ -95,7 +95,7 @@ def limiter_network(cases: int = 200) -> dict:
     return {"cases": cases, "feasible": feasible, "same_optimum": int(same), "feasible_same_optimum": int(feasible_same),
             "same_network": int(same_net),
             "casadi_s": statistics.mean(t_bb), "enumeration_s": statistics.mean(t_enum),
-            "full_casadi_s": timed(lambda: current_limiter.design({}), 3), "full_networks": float(networks),
+            "full_casadi_s": timed(lambda: limiter.design({}), 3), "full_networks": float(networks),
             "full_enumeration_s_extrapolated": per_network * networks}
 
 
@@ -110,8 +110,8 @@ def main():
                            capture_output=True)
             cli.append(time.perf_counter() - t)
     rows = {name: {"design_s": timed(fn), "enumeration_s": timed(enum)} for name, fn, enum in (
-        ("commutation", commutation.design, lambda: commutation.enumerate_series({})),
-        ("class_d", class_d.design, lambda: class_d.enumerate_series({})))}
+        ("commutation", commutation.design, lambda: commutation.enumerate({})),
+        ("class_d", class_d.design, lambda: class_d.enumerate({})))}
     out = {"machine": f"{platform.machine()}, {platform.python_implementation()} {platform.python_version()}",
            "cli_wall_s_median_of_5": statistics.median(cli), "designs": rows, "limiter_network": limiter_network()}
     path = ROOT / "book" / "design" / "benchmark.json"

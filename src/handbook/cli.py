@@ -171,7 +171,7 @@ def cmd_design(args) -> int:
 
 def _print_designs(out: dict, failed: dict) -> None:
     from .cli_text import width, wrap
-    from .design.schema import OUTPUTS
+    from .design.spec import OUTPUTS
     from .report.tables import shown_value
 
     total = width()
@@ -199,7 +199,7 @@ def _print_designs(out: dict, failed: dict) -> None:
 
 def _spice_value(key: str, value) -> str:
     """A --spice figure with its unit: currents, frequencies, voltages (swings, headroom, ripple), yes/no."""
-    from .report.tables import eng
+    from .core.units import eng
 
     if isinstance(value, bool) or key in ("ok", "window_reached", "meets_spec", "agrees"):
         return "yes" if value else "no"
@@ -231,7 +231,7 @@ def cmd_spice(args) -> int:
         print(json.dumps([{k: (None if isinstance(r.get(k), float) and r[k] != r[k] else r.get(k)) for k in keys}
                           | ({"error": r["error"]} if "error" in r else {}) for r in rows], indent=1))
     else:
-        from .report.tables import eng
+        from .core.units import eng
 
         unit = {r["unit"]: r["unit"].replace("ohm", "Ω") for r in rows}
         print(fit_table([[r["id"], eng(r["equation"], unit[r["unit"]]) if "error" not in r else "—",

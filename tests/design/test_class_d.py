@@ -9,8 +9,8 @@ from hypothesis import strategies as st
 
 from handbook.core import InputError
 from handbook.design import class_d
-from handbook.design.class_d_model import band_deviation_box_db, band_deviation_db, sensitivity
-from handbook.design.class_d_report import datasheet_application
+from handbook.design.class_d.explain import datasheet_application
+from handbook.design.class_d.model import band_deviation_box_db, band_deviation_db, sensitivity
 from handbook.design.solvers import Infeasible
 from handbook.sources.lm4651 import circuit as lm4651
 

@@ -17,7 +17,9 @@ from pathlib import Path
 import pytest
 
 from handbook.cli import main as cli_main
-from handbook.design import bom, converter, converter_cores
+from handbook.design import bom
+from handbook.design.converter import cores as converter_cores
+from handbook.design.converter import result as converter
 from handbook.design.solvers import Infeasible
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -305,7 +307,7 @@ def test_package_data_ships_the_table(tmp_path):
     package = ROOT / "src" / "handbook"
     data = [p.relative_to(package).as_posix() for p in package.rglob("*")
             if p.is_file() and p.suffix not in (".py", ".pyc") and "__pycache__" not in p.parts]
-    assert "design/converter_cores.json" in data
+    assert "design/converter/cores.json" in data
     for name in data:
         assert any(fnmatch.fnmatch(name, pat) for pat in patterns), name
     if shutil.which("git") is None:
@@ -322,7 +324,7 @@ def test_package_data_ships_the_table(tmp_path):
         pytest.skip(f"cannot build a wheel here: {built.stderr.strip()[-200:]}")
     assert built.returncode == 0, built.stderr
     wheel = next((tmp_path / "dist").glob("handbook-*.whl"))
-    assert "handbook/design/converter_cores.json" in zipfile.ZipFile(wheel).namelist()
+    assert "handbook/design/converter/cores.json" in zipfile.ZipFile(wheel).namelist()
 
 
 def test_catalogue_against_the_makers_figures():

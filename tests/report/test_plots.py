@@ -13,8 +13,8 @@ import pytest  # noqa: E402
 from matplotlib.ticker import EngFormatter  # noqa: E402
 
 from handbook import report  # noqa: E402
-from handbook.design import class_d, commutation, current_limiter  # noqa: E402
-from handbook.design.class_d_report import datasheet_application  # noqa: E402
+from handbook.design import class_d, commutation, limiter  # noqa: E402
+from handbook.design.class_d.explain import datasheet_application  # noqa: E402
 from handbook.report import design_plots  # noqa: E402
 
 
@@ -38,7 +38,7 @@ def test_design_space_plot_is_silent_on_a_busy_machine(monkeypatch):
     """The intermittent nbval failure: loc="best" searched the whole R7-R9 mesh and, under load, took
     over 1 s, so matplotlib warned on stderr. The plot now puts its legend in a fixed corner."""
     monkeypatch.setattr(matplotlib.legend, "time", _SlowClock())
-    fig = design_plots.limiter_design_space(current_limiter.design({}), {"the note's method": (0.075, 267.0)})
+    fig = design_plots.limiter_design_space(limiter.design({}), {"the note's method": (0.075, 267.0)})
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         _render(fig)
@@ -54,7 +54,7 @@ PLOTS = {
         d["current_limiter"], {"the note's method": (0.075, NOTE_NETWORK)}, n=10_000)[0],
     "limiter_design_space": lambda d: design_plots.limiter_design_space(d["current_limiter"],
                                                                         {"the note's method": (0.075, 267.0)}),
-    "limiter_sensitivity": lambda d: design_plots.limiter_sensitivity(current_limiter.sensitivity(
+    "limiter_sensitivity": lambda d: design_plots.limiter_sensitivity(limiter.analysis.sensitivity(
         d["current_limiter"].r7, d["current_limiter"].network, d["current_limiter"].spec)),
     "class_d_margins": lambda d: design_plots.class_d_margins(
         d["class_d"], {"datasheet's parts": datasheet_application(d["class_d"].spec)["margins"]}),
@@ -66,7 +66,7 @@ PLOTS = {
 @pytest.fixture(scope="module")
 def designs():
     motor = dict(inertia=72e-6, torque_constant=25e-3, start_current=0.5, flyback_time=1e-3)
-    return {"commutation": commutation.design(motor), "current_limiter": current_limiter.design({}),
+    return {"commutation": commutation.design(motor), "current_limiter": limiter.design({}),
             "class_d": class_d.design({})}
 
 

@@ -73,7 +73,7 @@ def test_response_follows_the_model_for_both_loads(ngspice):
 def test_a_class_d_design_is_confirmed(ngspice):
     from types import SimpleNamespace
 
-    from handbook.design import class_d_model as model
+    from handbook.design.class_d import model
 
     spec = {"r_load": 4.0, "supply": 20.0, "f_audio": 500.0, "osc_tol_slow": 0.2, "osc_tol_fast": 0.235,
             "l_tolerance": 0.1, "c_tolerance": 0.05, "ripple_max": 0.5}

@@ -7,7 +7,8 @@ import functools
 import pytest
 from drawn_parts import assert_edit_caught, assert_same_parts
 
-from handbook.spice import limiters, models, runner
+from handbook.report import spice_tables
+from handbook.spice import limiter_design, limiters, models, runner
 from handbook.spice.circuit import Part, evaluate
 
 BUILDERS = (limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limiters.supply_referenced)
@@ -62,15 +63,15 @@ def test_the_corner_shows_the_input_range_failure(ngspice):
 def test_a_design_is_confirmed_at_every_candidate_corner(ngspice):
     """SPICE runs all 1536 corners and keeps its own extremes: the design's corner choice is not used, so a
     wrong sign or a missed corner in the design's search would show as a difference here."""
-    from handbook.design import current_limiter
+    from handbook.design import limiter
     from handbook.spice import checks
 
-    r = current_limiter.design({})
-    lo, hi, head = limiters.design_corners(r)
+    r = limiter.design({})
+    lo, hi, head = limiter_design.design_corners(r)
     assert lo["i_eq"] == pytest.approx(r.i_trip_min, rel=1e-9) and hi["i_eq"] == pytest.approx(r.i_trip_max, rel=1e-9)
     assert head["head_eq"] == pytest.approx(r.headroom_min, rel=1e-9)
-    out = limiters.design_check(r)
-    assert out["corners"] == len(limiters.design_candidates(r)) == 1536
+    out = limiter_design.design_check(r)
+    assert out["corners"] == len(limiter_design.design_candidates(r)) == 1536
     assert out["i_trip_min_equation"] == r.i_trip_min and out["i_trip_max_equation"] == r.i_trip_max
     rows = checks.confirm_rows("current_limiter", r, out)
     assert all(row["agrees"] and row["verdict"] == "agrees" and row["rel_diff"] <= row["rtol"] for row in rows)
@@ -82,11 +83,11 @@ def test_a_network_that_leaves_the_op_amp_latched_is_not_confirmed(ngspice):
     normal afterwards, but at no motor current the output is already low; design_check must say so."""
     import dataclasses
 
-    from handbook.design import current_limiter
+    from handbook.design import limiter
 
-    r = current_limiter.design({})
+    r = limiter.design({})
     bad = dataclasses.replace(r, r12=r.r12 * 0.93)
-    out = limiters.design_check(bad)
+    out = limiter_design.design_check(bad)
     assert not out["ok"] and out["headroom_min"] < 2.0 and not out["meets_spec"]
     from handbook.spice import checks
 
@@ -109,7 +110,7 @@ def test_one_transistor_trip_moves_59_mV_a_decade_of_collector_current(ngspice):
 
 
 def test_chapter_table_says_which_checks_agree_by_construction(ngspice):
-    text = limiters.chapter_table(limiters.one_transistor()).data
+    text = spice_tables.chapter_table(limiters.one_transistor()).data
     assert "consistent (by construction)" in text and "agrees" in text
     row_25 = next(line for line in text.splitlines() if "(I_C = 2 mA), 25 °C" in line)
     assert "consistent (by construction)" in row_25 and "| agrees" not in row_25

@@ -8,7 +8,7 @@ import sys
 
 import pytest
 
-from handbook.spice import runner
+from handbook.spice import decoupling, runner
 
 needs_ngspice = pytest.mark.skipif(runner.available() is None, reason=runner.why_unavailable())
 
@@ -96,7 +96,7 @@ def test_a_failing_circuit_is_reported_and_the_others_still_are(monkeypatch):
 
     broken = Circuit("broken", "a broken deck", "test", (), "* a broken deck\nR1 a\n.tran 1u 1m\n.end\n",
                      (Check("broken-x", "x", "V", 1.0, "x", 0.01, "none"),))
-    monkeypatch.setattr(checks, "circuits", lambda: [broken, checks._load("decoupling:circuit")()])
+    monkeypatch.setattr(checks, "circuits", lambda: [broken, decoupling.circuit()])
     rows = checks.rows()
     bad = [r for r in rows if r["circuit"] == "broken"]
     assert len(bad) == 1 and not bad[0]["agrees"] and "line 2: `R1 a`" in bad[0]["error"]
@@ -182,8 +182,8 @@ def test_confirm_rows_carry_tolerance_reason_kind_and_verdict():
 
 @needs_ngspice
 def test_chapter_table_names_the_circuit_when_decks_share_quantities():
+    from handbook.report.spice_tables import chapter_table
     from handbook.spice import class_d, converter
-    from handbook.spice.circuit import chapter_table
 
     text = chapter_table(class_d.circuit(), class_d.circuit_8ohm(), class_d.ripple()).data
     assert text.splitlines()[0].lstrip("| ").startswith("circuit")

@@ -26,7 +26,19 @@ def _module_bytes(name: str) -> bytes:
 
 
 def key(source) -> str:
-    """A hash of everything a source's equation summaries depend on."""
+    """A hash of everything a source's equation summaries depend on.
+
+    Parameters
+    ----------
+    source : Source
+        The source document whose equations are checked (its ``name`` and ``equations_module`` are read).
+
+    Returns
+    -------
+    str
+        The first 20 hex digits of a SHA-256 over the sympy version, the source's name, and the code of its
+        equations module and of the checking modules.
+    """
     from importlib.metadata import version
 
     h = hashlib.sha256(f"sympy {version('sympy')}\n{source.name}\n".encode())
@@ -36,10 +48,30 @@ def key(source) -> str:
 
 
 def cache_dir() -> Path:
+    """The directory the summaries are stored in: ``$HANDBOOK_CACHE``, else ``~/.cache/handbook``.
+
+    Returns
+    -------
+    pathlib.Path
+        The cache directory (not created here).
+    """
     return Path(os.environ.get("HANDBOOK_CACHE") or Path.home() / ".cache" / "handbook")
 
 
 def cached_summaries(source) -> list[dict]:
+    """A source's equation summaries, read from the cache or computed and stored there.
+
+    Parameters
+    ----------
+    source : Source
+        The source document whose equations are summarised.
+
+    Returns
+    -------
+    list of dict
+        One :meth:`~handbook.core.equation.Equation.summary` per equation, in the order of
+        ``source.equations()``.
+    """
     path = cache_dir() / f"equations-{source.name.replace('/', '_')}-{key(source)}.json"
     try:
         return json.loads(path.read_text())

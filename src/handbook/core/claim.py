@@ -73,13 +73,33 @@ def classify(printed: float, half_unit: float, computed: float, *, relation: str
       value the note's own rounded intermediate gives (``via_rounded``);
     * otherwise ``misprint`` when the recomputation uses the note's own inputs (``basis="note"``),
       and ``inconsistent`` when it uses another source (a device datasheet, another note).
+
+    Parameters
+    ----------
+    printed : float
+        The printed number in SI units.
+    half_unit : float
+        Half a unit in its last printed digit, SI units (:attr:`Printed.half_unit`).
+    computed : float
+        The recomputed value, SI units.
+    relation : str
+        ``"="`` for a value, ``">="`` or ``"<="`` for a bound the printed number must meet.
+    basis : str
+        ``"note"`` when the recomputation uses the note's own inputs, else the other document it rests on.
+    via_rounded : float or None
+        The value the note's own rounded intermediate gives, SI units (None: no such intermediate).
+
+    Returns
+    -------
+    str
+        ``"exact"``, ``"rounding"``, ``"bound met"``, ``"misprint"`` or ``"inconsistent"``.
     """
     if not (math.isfinite(printed) and math.isfinite(computed)):
         raise ValueError(f"printed={printed!r} and computed={computed!r} must both be finite numbers")
     if relation == ">=":
-        ok = printed >= computed * (1 - 1e-12)
+        ok = printed >= computed - 1e-12 * abs(computed)  # the slack loosens, whatever the sign
     elif relation == "<=":
-        ok = printed <= computed * (1 + 1e-12)
+        ok = printed <= computed + 1e-12 * abs(computed)
     else:
         scale = max(abs(printed), abs(computed), 1e-300)
         if abs(printed - computed) <= 1e-9 * scale:
@@ -158,7 +178,23 @@ class Claim:
         return status
 
     def evaluate(self, params: Mapping, defaults: Mapping) -> dict:
-        """Recompute with ``params``; compare with the print only where the inputs read are the note's."""
+        """Recompute with ``params``; compare with the print only where the inputs read are the note's.
+
+        Parameters
+        ----------
+        params : Mapping
+            Parameter name -> value (SI units) to recompute with.
+        defaults : Mapping
+            The source's own values, parameter name -> value: a parameter read that differs from its default
+            makes the comparison with the print "n/a".
+
+        Returns
+        -------
+        dict
+            The claim's row: ``id``, ``source`` (where it is printed), ``chapter``, ``quantity``, ``unit`` (SI),
+            ``printed`` (SI value), ``printed_text``, ``computed`` (SI value), ``relation``, ``basis``, ``status``,
+            ``reason``, ``consequence`` and ``depends`` (the sorted parameter names read).
+        """
         seen = Recorder(params)
         computed = float(self.compute(seen))
         via = None if self.via_rounded is None else float(self.via_rounded(seen))

@@ -43,17 +43,50 @@ def dimension_of(expr: sp.Expr):
     """The SI dimension of an expression built from sympy unit quantities.
 
     Raises ``ValueError`` (from sympy) when a sum adds unlike dimensions.
+
+    Parameters
+    ----------
+    expr : sympy.Expr
+        An expression of symbols and sympy unit quantities.
+
+    Returns
+    -------
+    sympy.physics.units.Dimension
+        Its dimension in the SI system.
     """
     _, dim = SI._collect_factor_and_dimension(expr)
     return dim
 
 
 def same_dimension(a, b) -> bool:
+    """Whether two SI dimensions are equivalent (``dimsys_SI.equivalent_dims``).
+
+    Parameters
+    ----------
+    a, b : sympy.physics.units.Dimension
+        The dimensions compared.
+
+    Returns
+    -------
+    bool
+        True when they reduce to the same base dimensions.
+    """
     return dimsys_SI.equivalent_dims(a, b)
 
 
 def to_si_number(expr: sp.Expr) -> sp.Expr:
-    """Convert a dimensionless expression of unit quantities to a plain number (exact where possible)."""
+    """Convert a dimensionless expression of unit quantities to a plain number (exact where possible).
+
+    Parameters
+    ----------
+    expr : sympy.Expr
+        A dimensionless expression of sympy unit quantities (a ratio of two quantities of one dimension).
+
+    Returns
+    -------
+    sympy.Expr
+        The expression in base SI units, simplified: a plain number where it is one.
+    """
     base = [u.kilogram, u.meter, u.second, u.ampere, u.kelvin]
     return sp.simplify(u.convert_to(expr, base))
 
@@ -71,7 +104,19 @@ def _decimal(r: sp.Rational) -> sp.Expr:
 
 
 def latex(expr) -> str:
-    """LaTeX of ``expr`` with decimal constants shown as printed in the note."""
+    """LaTeX of ``expr`` with decimal constants shown as printed in the note.
+
+    Parameters
+    ----------
+    expr : sympy.Expr or object
+        The expression (anything ``sympy.sympify`` takes).
+
+    Returns
+    -------
+    str
+        Its LaTeX, rationals with a decimal expansion written as decimals (2.15, not 43/20) and the vacuum
+        permittivity and permeability as their symbols.
+    """
     expr = sp.sympify(expr)
     exponents = {a for pw in expr.atoms(sp.Pow) for a in pw.exp.atoms(sp.Rational)}
     swap = {r: _decimal(r) for r in expr.atoms(sp.Rational) - exponents if r.q not in (1, 2, 4)}
@@ -150,17 +195,43 @@ class Equation:
 
     # -- forms -------------------------------------------------------------------------------
     def printed_physical(self) -> sp.Expr:
-        """The printed right side with every hidden unit made explicit (a physical quantity)."""
+        """The printed right side with every hidden unit made explicit (a physical quantity).
+
+        Returns
+        -------
+        sympy.Expr
+            The printed right side with ``scales`` substituted and multiplied by ``lhs_scale``, in the physical
+            symbols (SI units of the left side).
+        """
         rhs = self.printed.subs(self.scales)
         if self.lhs_scale is not None:
             rhs = rhs * self.lhs_scale
         return rhs
 
     def derived_at_values(self) -> sp.Expr:
+        """The derived right side with the note's constants (``values``) substituted.
+
+        Returns
+        -------
+        sympy.Expr
+            ``derived`` with each symbol of ``values`` replaced by its value with units (not defined for an
+            empirical equation, which has no derived form).
+        """
         return self.derived.subs(self.values)
 
     def value_at(self, inputs: dict) -> float:
-        """The printed form at ``inputs`` (physical symbol -> SI value), in SI units of the left side."""
+        """The printed form at ``inputs`` (physical symbol -> SI value), in SI units of the left side.
+
+        Parameters
+        ----------
+        inputs : dict
+            Physical symbol -> its value in SI units, for every free symbol of the printed form.
+
+        Returns
+        -------
+        float
+            The printed form's value, in the SI unit of the left side (``lhs_unit``).
+        """
         expr = self._with_units(self.printed_physical()).subs(inputs, simultaneous=True) / self.lhs_unit
         return float(to_si_number(expr))
 
@@ -169,7 +240,15 @@ class Equation:
         return expr.subs({s: s * unit for s, unit in self.units.items()}, simultaneous=True)
 
     def check(self) -> Check:
-        """The comparison of the printed and derived forms (computed once, then remembered)."""
+        """The comparison of the printed and derived forms (computed once, then remembered).
+
+        Returns
+        -------
+        Check
+            Agreement, relation (``"identical"``, ``"constant factor"``, ``"differs"`` or ``"empirical"``),
+            the ratio and difference where they apply, the dimension check and, for an empirical equation, its
+            points against the source's own figures.
+        """
         return self._check
 
     @functools.cached_property
@@ -220,7 +299,14 @@ class Equation:
         return Check(all(p[-1] for p in points), "empirical", None, None, dims_ok, dims_note, tuple(points))
 
     def ocr_dims_ok(self) -> bool | None:
-        """Whether the OCR text taken literally is dimensionally consistent (None if no OCR form)."""
+        """Whether the OCR text taken literally is dimensionally consistent (None if no OCR form).
+
+        Returns
+        -------
+        bool or None
+            True if the OCR form has the left side's dimension, False if not (or if it adds unlike dimensions),
+            None when there is no OCR form.
+        """
         if self.ocr_form is None:
             return None
         try:
@@ -231,6 +317,13 @@ class Equation:
 
     # -- display -----------------------------------------------------------------------------
     def latex_printed(self) -> str:
+        """The printed equation as LaTeX: left side (with its hidden unit), relation, printed form.
+
+        Returns
+        -------
+        str
+            LaTeX of the whole equation, using ``printed_tex`` where it is given.
+        """
         lhs = latex(self.lhs)
         if self.lhs_scale is not None:
             lhs += r"\,[" + _UNIT_TEX.get(str(self.lhs_scale), latex(self.lhs_scale)) + "]"
@@ -238,7 +331,14 @@ class Equation:
         return f"{lhs} {rel} {self.printed_tex or latex(self.printed)}"
 
     def latex_derived(self) -> str:
-        """The derived form, or for an empirical equation the printed form at the source's own figures."""
+        """The derived form, or for an empirical equation the printed form at the source's own figures.
+
+        Returns
+        -------
+        str
+            LaTeX of the derived equation, or for an empirical equation an ``array`` with one row per figure
+            (inputs, printed form's value, datasheet figure, check mark or deviation).
+        """
         if self.empirical:
             return self._latex_table()
         rel = r"\ge" if self.relation == ">=" else "="
@@ -256,6 +356,15 @@ class Equation:
         return r"\begin{array}{llll}" + r" \\ ".join(rows) + r"\end{array}" if rows else r"\text{(no figure to check)}"
 
     def summary(self) -> dict:
+        """The equation's summary for the chapters, the errata and the command line (JSON-ready).
+
+        Returns
+        -------
+        dict
+            ``id``, ``source``, ``title``, ``printed_latex``, ``derived_latex``, ``agrees``, ``relation``,
+            ``factor`` (printed / derived as a float, or None), ``dimensions_ok``, ``law``, ``note`` (the verdict
+            and the record's notes), ``reconstructed``, ``rounded_constants``, ``empirical`` and ``fitted_to``.
+        """
         c = self.check()
         if self.empirical:
             return self._summary_empirical(c)

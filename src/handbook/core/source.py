@@ -36,7 +36,20 @@ class Param:
     choices: tuple = ()  # for a name: the accepted values
 
     def check(self, value, prefix: str = ""):
-        """``value`` if it is acceptable, else an :class:`InputError` naming the key, value and range."""
+        """``value`` if it is acceptable, else an :class:`InputError` naming the key, value and range.
+
+        Parameters
+        ----------
+        value : float or int or str
+            The value given, in the parameter's unit (SI; a name for a choice).
+        prefix : str
+            Put before the parameter's name in the message ("design.").
+
+        Returns
+        -------
+        float or int or str
+            ``value``, as an int where the default is an int.
+        """
         name = prefix + self.name
         if self.choices:
             if value not in self.choices:
@@ -82,7 +95,22 @@ class Fact:
 
 
 def unknown_key_message(kind: str, key: str, known) -> str:
-    """'unknown AN94002 parameter 'rpm' (did you mean 'rpm_min'?)' or the list of known names."""
+    """'unknown AN94002 parameter 'rpm' (did you mean 'rpm_min'?)' or the list of known names.
+
+    Parameters
+    ----------
+    kind : str
+        What the key names ("AN94002 parameter").
+    key : str
+        The unknown name given.
+    known : iterable of str
+        The names accepted.
+
+    Returns
+    -------
+    str
+        The message, with the nearest known name or else the list of them.
+    """
     near = difflib.get_close_matches(key, list(known), n=1)
     hint = f" (did you mean {near[0]!r}?)" if near else f"; known: {', '.join(known)}"
     return f"unknown {kind} {key!r}{hint}"
@@ -108,7 +136,18 @@ class Source:
 
     def params(self, **overrides) -> dict:
         """The source's own values with ``overrides`` applied; unknown names are refused with the
-        near match, and every value given is checked against its range."""
+        near match, and every value given is checked against its range.
+
+        Parameters
+        ----------
+        **overrides : float or int or str
+            Parameter name -> value, in the parameter's unit (SI).
+
+        Returns
+        -------
+        dict
+            Every parameter name -> value: the source's defaults with ``overrides`` applied.
+        """
         by_name = {p.name: p for p in self.parameters}
         for key, value in overrides.items():
             if key not in by_name:
@@ -118,19 +157,58 @@ class Source:
 
     # -- claims ------------------------------------------------------------------------------
     def claims(self) -> list[Claim]:
+        """Every claim of the source (built once per process, ids checked unique).
+
+        Returns
+        -------
+        list of Claim
+            The claims in the source's order.
+        """
         return _claims(self)
 
     def evaluate(self, p: Mapping | None = None, chapter: str | None = None) -> list[dict]:
-        """Every claim recomputed with ``p`` (default: the source's own values)."""
+        """Every claim recomputed with ``p`` (default: the source's own values).
+
+        Parameters
+        ----------
+        p : Mapping or None
+            Parameter name -> value (SI units), as :meth:`params` returns; None for the source's own values.
+        chapter : str or None
+            Only the claims of this chapter; None for all.
+
+        Returns
+        -------
+        list of dict
+            One row per claim, as :meth:`Claim.evaluate` returns it.
+        """
         defaults = self.defaults
         p = defaults if p is None else p
         return [c.evaluate(p, defaults) for c in self.claims() if chapter is None or c.chapter == chapter]
 
     # -- equations ---------------------------------------------------------------------------
     def equations(self) -> list:
+        """Every equation record of the source (its equations module's ``build()``, once per process).
+
+        Returns
+        -------
+        list of Equation
+            The records in the source's order; empty when the source has no equations module.
+        """
         return list(_equations(self))
 
     def equation(self, eq_id: str):
+        """One equation record by id; an unknown id is refused with the near match.
+
+        Parameters
+        ----------
+        eq_id : str
+            The record's id ("an94002-eq6").
+
+        Returns
+        -------
+        Equation
+            The record.
+        """
         for e in _equations(self):
             if e.id == eq_id:
                 return e
@@ -138,7 +216,13 @@ class Source:
 
     def equation_summaries(self) -> list[dict]:
         """Every equation's summary (forms, agreement, dimensions), from the on-disk cache when the code
-        that defines the equations has not changed since it was stored."""
+        that defines the equations has not changed since it was stored.
+
+        Returns
+        -------
+        list of dict
+            One :meth:`~handbook.core.equation.Equation.summary` per equation.
+        """
         from .checks_cache import cached_summaries
 
         return cached_summaries(self)

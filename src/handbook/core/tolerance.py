@@ -32,6 +32,21 @@ def corners(f: Callable[..., float], nominal: Mapping[str, float], spread: Mappi
     2**k corners are evaluated, which finds the exact extremes of any ``f`` that is monotonic in each
     input over its range (true of the divider and trip-point formulas here: each resistor, the zener
     voltage and the offset enter monotonically; see the chapters for the derivative signs).
+
+    Parameters
+    ----------
+    f : callable
+        The quantity, called with keyword arguments (SI units); it must work elementwise on numpy arrays.
+    nominal : Mapping of str to float
+        Every argument of ``f`` -> its nominal value, SI units.
+    spread : Mapping of str to (float, float)
+        Argument name -> its (low, high) values, SI units.
+
+    Returns
+    -------
+    WorstCase
+        ``f`` at nominal, its lowest and highest values over the corners, and the corners (argument name ->
+        value) where they occur.
     """
     names = list(spread)
     f_nom = float(f(**nominal))
@@ -49,10 +64,35 @@ def corners(f: Callable[..., float], nominal: Mapping[str, float], spread: Mappi
 
 
 def symmetric(nominal: float, tol: float) -> tuple[float, float]:
+    """The (low, high) ends of a value with a symmetric tolerance.
+
+    Parameters
+    ----------
+    nominal : float
+        The nominal value, SI units.
+    tol : float
+        The tolerance as a fraction (5 % is 0.05).
+
+    Returns
+    -------
+    tuple of float
+        (nominal (1 - tol), nominal (1 + tol)), SI units.
+    """
     return nominal * (1 - tol), nominal * (1 + tol)
 
 
 def stack_product(tols) -> tuple[float, float]:
-    """The notes' stack-up: multiply (1 + t) for the high end; the low end is the product of (1 - t)."""
+    """The notes' stack-up: multiply (1 + t) for the high end; the low end is the product of (1 - t).
+
+    Parameters
+    ----------
+    tols : iterable of float
+        The tolerances as fractions (5 % is 0.05).
+
+    Returns
+    -------
+    tuple of float
+        (low, high): the relative deviations prod(1 - t) - 1 (negative) and prod(1 + t) - 1, as fractions.
+    """
     tols = list(tols)
     return float(np.prod([1 - t for t in tols]) - 1), float(np.prod([1 + t for t in tols]) - 1)

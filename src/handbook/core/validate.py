@@ -20,7 +20,21 @@ _PREFIXES = ((1e12, "T"), (1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, 
 
 def quantity(value, unit: str = "") -> str:
     """A value as a message shows it: '50 MHz', '1 kHz', '-1 A', '12 µH' for SI units, '0.05' for a fraction,
-    '1,000,000 rpm' for others (the number to 4 significant figures)."""
+    '1,000,000 rpm' for others (the number to 4 significant figures).
+
+    Parameters
+    ----------
+    value : float
+        The value, in ``unit``.
+    unit : str
+        Its unit: an SI unit ("Hz", "ohm", ...) gets an engineering prefix, ``""`` or ``"1"`` none, anything
+        else ("rpm") is written after the plain number.
+
+    Returns
+    -------
+    str
+        The value as the message shows it.
+    """
     v = float(value)
     if unit in _PREFIXED and v != 0 and math.isfinite(v):
         scale, prefix = next(((f, p) for f, p in _PREFIXES if abs(v) >= f * (1 - 5e-5)), _PREFIXES[-1])
@@ -30,7 +44,22 @@ def quantity(value, unit: str = "") -> str:
 
 
 def range_text(low: float | None, high: float | None, low_open: bool = False, unit: str = "") -> str:
-    """'from 1 kHz to 1 MHz', '> 0 A and <= 10 A', '<= 5 V': the accepted range with its unit."""
+    """'from 1 kHz to 1 MHz', '> 0 A and <= 10 A', '<= 5 V': the accepted range with its unit.
+
+    Parameters
+    ----------
+    low, high : float or None
+        The ends of the range, in ``unit``; None for no limit on that side.
+    low_open : bool
+        ``low`` itself is excluded (a positive quantity: low = 0, low_open = True).
+    unit : str
+        The unit of the range (as :func:`quantity` takes it).
+
+    Returns
+    -------
+    str
+        The range in words, "(any)" when neither end is given.
+    """
     if low is not None and high is not None and not low_open:
         return f"from {quantity(low, unit)} to {quantity(high, unit)}"
     lo = None if low is None else ("> " if low_open else ">= ") + quantity(low, unit)
@@ -40,7 +69,28 @@ def range_text(low: float | None, high: float | None, low_open: bool = False, un
 
 def out_of_range(name: str, value, unit: str, low: float | None, high: float | None, low_open: bool = False,
                  meaning: str = "") -> InputError | None:
-    """The error for ``value`` outside [low, high] (``low`` excluded with ``low_open``), else None."""
+    """The error for ``value`` outside [low, high] (``low`` excluded with ``low_open``), else None.
+
+    Parameters
+    ----------
+    name : str
+        The field's name, as the message shows it.
+    value : float
+        The value given, in ``unit``.
+    unit : str
+        Its unit (as :func:`quantity` takes it), or an annotation in parentheses shown once after the range.
+    low, high : float or None
+        The accepted range, in ``unit``; None for no limit on that side.
+    low_open : bool
+        ``low`` itself is excluded.
+    meaning : str
+        What the field is, added in parentheses to the message.
+
+    Returns
+    -------
+    InputError or None
+        The error to raise, or None when ``value`` is in range.
+    """
     v = float(value)
     if not ((low is not None and (v <= low if low_open else v < low)) or (high is not None and v > high)):
         return None
@@ -55,6 +105,24 @@ def number(name: str, value, *, low: float | None = None, high: float | None = N
     """``value`` as a float, or an :class:`InputError` naming ``name`` and the accepted range.
 
     A numpy array is checked element by element and returned unchanged.
+
+    Parameters
+    ----------
+    name : str
+        The field's name, as the message shows it.
+    value : float or numpy.ndarray
+        The value given, in ``unit``.
+    low, high : float or None
+        The accepted range, in ``unit``; None for no limit on that side.
+    low_open : bool
+        ``low`` itself is excluded.
+    unit : str
+        The unit of ``value`` (SI: "V", "ohm", ...), for the message.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``value`` as a float, or the array unchanged.
     """
     if isinstance(value, np.ndarray) and value.dtype.kind in "fiu":
         for x in (value.min(), value.max()) if value.size and np.isfinite(value).all() else value.ravel()[:1]:
@@ -74,20 +142,74 @@ def number(name: str, value, *, low: float | None = None, high: float | None = N
 
 
 def positive(name: str, value, unit: str = "", high: float | None = None) -> float:
+    """``value`` as a float if it is > 0 (and <= ``high`` where given), else an :class:`InputError`.
+
+    Parameters
+    ----------
+    name : str
+        The field's name, as the message shows it.
+    value : float or numpy.ndarray
+        The value given, in ``unit``.
+    unit : str
+        The unit of ``value`` (SI: "V", "ohm", ...), for the message.
+    high : float or None
+        The largest value accepted, in ``unit``; None for no upper limit.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``value`` as a float, or the array unchanged.
+    """
     return number(name, value, low=0.0, low_open=True, unit=unit, high=high)
 
 
 def fraction(name: str, value) -> float:
-    """A tolerance as a fraction: 0 <= value < 1 (5 % is 0.05)."""
+    """A tolerance as a fraction: 0 <= value < 1 (5 % is 0.05).
+
+    Parameters
+    ----------
+    name : str
+        The field's name, as the message shows it.
+    value : float
+        The tolerance given, as a fraction.
+
+    Returns
+    -------
+    float
+        ``value`` as a float.
+    """
     return number(name, value, low=0.0, high=0.999, unit="(fraction, 5 % = 0.05)")
 
 
 def pole_pairs(name: str, value) -> int:
+    """``value`` as an int if it is a whole number of pole pairs >= 1, else an :class:`InputError`.
+
+    Parameters
+    ----------
+    name : str
+        The field's name, as the message shows it.
+    value : int
+        The number of magnetic pole pairs given.
+
+    Returns
+    -------
+    int
+        ``value`` as an int.
+    """
     if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 1:
         raise InputError(f"{name} = {value!r}: the number of pole pairs is a whole number >= 1 (the note's motor has 6)")
     return int(value)
 
 
 def ordered(name_low: str, low: float, name_high: str, high: float) -> None:
+    """An :class:`InputError` unless ``low < high`` (two levels of one window).
+
+    Parameters
+    ----------
+    name_low, name_high : str
+        The two fields' names, as the message shows them.
+    low, high : float
+        Their values, one unit for both (SI: V for switching levels).
+    """
     if not low < high:
         raise InputError(f"{name_low} = {low:g} must be below {name_high} = {high:g}")

@@ -54,7 +54,7 @@ def rows(result: dict) -> list[dict]:
 
 def converter_rows(cv) -> list[tuple]:
     """The TCA5600 converter's coil and sense resistor (the class-D filter already uses L1, L2)."""
-    from ..report.tables import eng
+    from ..core.units import eng
 
     sv = cv.spec
     return [
@@ -80,7 +80,7 @@ _UNITS = {"C": "F", "R": "ohm", "L": "H", "D": "V"}
 
 def readable(ref: str, value: float, series: str) -> str:
     """The value as a person reads it: 18 nF, 1.21 kΩ, 100 µH, 8.2 V (zener), 0.68 K/W."""
-    from ..report.tables import eng
+    from ..core.units import eng
 
     if ref == "heat sink":
         return f"{value:.3g} K/W"

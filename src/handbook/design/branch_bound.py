@@ -82,9 +82,12 @@ def search(values: list[np.ndarray], relax, evaluate, threshold: float, gap: flo
             continue
         lb = np.array([values[i][lo[i]] for i in range(k)])
         ub = np.array([values[i][hi[i]] for i in range(k)])
-        if cheap_bound is not None and cheap_bound(lb, ub) < max(threshold, best.score + gap):
-            best.cheap += 1
-            continue
+        if cheap_bound is not None:
+            cheap = cheap_bound(lb, ub)
+            if cheap < max(threshold, best.score + gap):  # dropped for its bound: the bound still counts
+                pruned = max(pruned, min(cheap, -neg_parent)) if cheap >= threshold else pruned
+                best.cheap += 1
+                continue
         best.nodes += 1
         res = relax(lb, ub, x0)
         if res is None:
@@ -106,9 +109,15 @@ def search(values: list[np.ndarray], relax, evaluate, threshold: float, gap: flo
             va, vb = values[i][a[0]], values[i][a[1]]
             depth.append(min(np.log(x[i] / va), np.log(vb / x[i])) / np.log(vb / va) if va <= x[i] <= vb else 0.5)
         i = int(np.argmax(depth))
-        if depth[i] < 0 or (depth[i] <= 1e-9 and bound <= best.score + gap):
+        if depth[i] <= 1e-9 and bound <= best.score + gap:  # the relaxed optimum is a series choice: settled
             continue
-        split = _around(values[i], lo[i], hi[i], x[i])[0]
+        if depth[i] < 0:  # every relaxed value sits on a node's end, yet the bound is not reached there: halve
+            i = int(np.argmax([hi[j] - lo[j] for j in range(k)]))  # the widest range (no other split helps)
+            if hi[i] == lo[i]:
+                continue
+            split = (lo[i] + hi[i]) // 2
+        else:
+            split = _around(values[i], lo[i], hi[i], x[i])[0]
         if split == hi[i]:
             split -= 1
         for child in ((lo, hi[:i] + (split,) + hi[i + 1:]), (lo[:i] + (split + 1,) + lo[i + 1:], hi)):

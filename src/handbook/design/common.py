@@ -1,11 +1,11 @@
 """What every design shares: completing and checking its table, and the result's JSON summary."""
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field, fields
 
 from ..core import InputError
 from ..core.source import unknown_key_message
-from .schema import OUTPUTS, TABLES
+from .schema import TABLES
 
 
 def completed(table: str, spec: dict | None) -> dict:
@@ -28,13 +28,45 @@ def ordered(table: str, low_key: str, high_key: str, s: dict, unit: str, strict:
 
 
 @dataclass(frozen=True)
+class Output:
+    """One result a design reports: its key in the JSON (SI), the unit, and a label for people."""
+
+    key: str
+    unit: str  # "F", "ohm", "A", ...; "%" for a fraction shown as a percentage; "" for text or plain numbers
+    label: str
+
+
+def reported(unit: str, label: str):
+    """A result field the design reports (in the JSON, the text output and the chapters' tables), with its
+    unit and its label: the one place either is written."""
+    return field(metadata={"unit": unit, "label": label})
+
+
+@dataclass(frozen=True)
 class Result:
-    """A design's result: its checked spec and the values it reports (``OUTPUTS`` of its table)."""
+    """A design's result: its checked spec and the values it reports (the fields declared with
+    :func:`reported`, in their order)."""
 
     spec: dict
 
     table = ""
 
+    @classmethod
+    def outputs(cls) -> tuple[Output, ...]:
+        """The reported fields, in order, with unit and label."""
+        return tuple(Output(f.name, f.metadata["unit"], f.metadata["label"]) for f in fields(cls) if "unit" in f.metadata)
+
     def summary(self) -> dict:
         """The reported values in SI units, keyed as in the JSON output."""
-        return {o.key: getattr(self, o.key) for o in OUTPUTS[self.table]}
+        return {o.key: getattr(self, o.key) for o in self.outputs()}
+
+
+def explained(design, spec: dict | None):
+    """Why ``spec`` cannot be met, and what can (the :class:`~handbook.design.solvers.Infeasible` that
+    ``design`` raises), or None when ``design`` meets it: every design's ``explain``."""
+    from .solvers import Infeasible
+    try:
+        design(spec)
+    except Infeasible as exc:
+        return exc
+    return None

@@ -8,8 +8,6 @@ tolerances and THD as fractions).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from ..core import Param
 from ..core.series import SERIES_NAMES
 
@@ -294,75 +292,6 @@ def _tables() -> dict[str, tuple[Param, ...]]:
 
 #: table -> its keys, in the order the README and the help list them
 TABLES: dict[str, tuple[Param, ...]] = _tables()
-
-
-@dataclass(frozen=True)
-class Output:
-    """One result a design reports: its key in the JSON (SI), the unit, and a label for people."""
-
-    key: str
-    unit: str  # "F", "ohm", "A", ...; "%" for a fraction shown as a percentage; "" for text or plain numbers
-    label: str
-
-
-#: table -> the results it reports, in order
-OUTPUTS: dict[str, tuple[Output, ...]] = {
-    "commutation": (
-        Output("cap_cd", "F", "CAP-CD"), Output("cap_dc", "F", "CAP-DC"),
-        Output("rpm_min_reliable", "rpm", "lowest reliable speed"),
-        Output("rpm_max_reliable", "rpm", "highest reliable speed"),
-        Output("noise_margin", "%", "margin above the noise floor at rpm_max"), Output("binding", "", "binding"),
-        Output("cap_st", "F", "CAP-ST (motor data given)"), Output("cap_ti", "F", "CAP-TI (flyback_time given)"),
-        Output("warnings", "", "warnings"),
-    ),
-    "current_limiter": (
-        *(Output(f"r{n}", "ohm", f"R{n}") for n in (7, 9, 10, 11, 12, 13)),
-        Output("i_trip_min", "A", "lowest trip current"), Output("i_trip_max", "A", "highest trip current"),
-        Output("i_trip_nominal", "A", "nominal trip current"),
-        Output("p_r7", "W", "loss in R7 at the highest trip current (stalled motor)"),
-        Output("v_cs_nominal", "V", "nominal sense voltage"),
-        Output("margin_low", "%", "margin above i_no_trip"), Output("margin_high", "%", "margin below i_must_trip"),
-        Output("headroom_min", "V", "least op-amp input distance below the supply"),
-        Output("divider_current", "A", "current the dividers draw from the zener node"),
-        Output("margin_bound", "%", "no network with this R7 has a worst margin above"),
-        Output("binding", "", "binding"), Output("warnings", "", "warnings"),
-    ),
-    "class_d": (
-        Output("f_sw", "Hz", "switching frequency (eq 5, nominal)"),
-        Output("f_sw_min", "Hz", "slowest oscillator corner"), Output("f_sw_max", "Hz", "fastest oscillator corner"),
-        Output("r_osc", "ohm", "R_OSC"), Output("r_dly", "ohm", "R_DLY"), Output("l_out", "H", "filter inductors L"),
-        Output("c_out", "F", "C_BYP"),
-        Output("efficiency", "%", "efficiency at p_out"),
-        Output("p_dissipation", "W", "LM4652 dissipation (corner setting the heat sink)"),
-        Output("theta_sa_required", "K/W", "heat sink needed"),
-        Output("t_junction", "C", "T_j with the heat sink (the one needed: 150 C - tj_margin by construction)"),
-        Output("t_junction_no_sink", "C", "T_j with no heat sink, theta_JA alone (above 150 C it shuts down)"),
-        Output("thd_n", "%", "THD+N at the test point (in the analyser's band)"),
-        Output("p_clip", "W", "clipping power"),
-        Output("binding", "", "binding"), Output("warnings", "", "warnings"),
-    ),
-    "converter": (
-        Output("alpha", "1", "time ratio alpha = t1/t2 (eq 3)"), Output("t1", "s", "charging time t1 (eq 4)"),
-        Output("t2", "s", "dumping time t2"), Output("i_peak", "A", "peak coil current (eq 5)"),
-        Output("l1", "H", "coil inductance L1 (eq 6)"), Output("r1", "ohm", "current-sense resistor R1 (eq 6a)"),
-        Output("r1_part", "ohm", "R1 fitted (series value, R1/(1 + r1_tolerance) or below)"),
-        Output("i_peak_max", "A", "highest peak coil current (R1 at its low end)"),
-        Output("l1_nominal", "H", "inductance wound, nominal (f_min at +a_l_tolerance)"),
-        Output("f_sw_min", "Hz", "lowest full-load frequency, supply range and corners"),
-        Output("f_sw_max", "Hz", "highest full-load frequency, supply range and corners"),
-        Output("core_shape", "", "core shape"), Output("core_material", "", "core material"),
-        Output("turns", "", "turns"),
-        Output("gap", "m", "centre-column gap (PyOpenMagnetics' gap model)"),
-        Output("a_l", "H", "A_L (inductance per turn squared, nominal)"), Output("wire", "", "wire"),
-        Output("b_peak", "T", "peak flux density, centre column (highest peak current)"),
-        Output("b_peak_min_area", "T", "peak flux density, narrowest section (the one saturation is judged at)"),
-        Output("core_loss", "W", "core loss (iGSE)"),
-        Output("winding_loss", "W", "winding loss (I_rms^2 R_dc, copper at its hottest)"),
-        Output("temperature_rise", "K", "temperature rise"),
-        Output("saturation_margin", "%", "saturation margin (narrowest section, hot, highest I_peak)"),
-        Output("binding", "", "binding"), Output("warnings", "", "warnings"),
-    ),
-}
 
 
 def defaults(table: str) -> dict:

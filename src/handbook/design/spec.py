@@ -18,13 +18,16 @@ from pathlib import Path
 from ..core import InputError
 from ..core.source import unknown_key_message
 from ..core.validate import out_of_range
-from . import class_d, commutation, converter, current_limiter
+from . import class_d, commutation, converter, limiter
 from .schema import TABLES
 from .solvers import Infeasible
 
 #: table -> the design module that checks and solves it
-DESIGNS = {"commutation": commutation, "current_limiter": current_limiter, "class_d": class_d,
+DESIGNS = {"commutation": commutation, "current_limiter": limiter, "class_d": class_d,
            "converter": converter}
+#: table -> the results its design reports (unit and label declared on the result's fields)
+OUTPUTS = {"commutation": commutation.CommutationResult.outputs(), "current_limiter": limiter.LimiterResult.outputs(),
+           "class_d": class_d.ClassDResult.outputs(), "converter": converter.ConverterResult.outputs()}
 
 
 def _table_of(key: str) -> str | None:
@@ -113,5 +116,5 @@ def summary(result: dict) -> dict:
     return {t: r.summary() for t, r in result.items()}
 
 
-__all__ = ["DESIGNS", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each", "summary",
+__all__ = ["DESIGNS", "OUTPUTS", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each", "summary",
            "unknown_key_message"]

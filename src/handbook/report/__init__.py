@@ -11,7 +11,8 @@ _HOME = {"axes": "figures", "format_axis": "figures", "glue_all": "notebook", "i
          "setup": "notebook",
          "show_equation": "notebook", "BADGE": "tables", "ERRATA_KINDS": "tables", "design_table": "tables",
          "eng": "tables", "errata_counts": "tables", "errata_md": "tables", "examples_table": "tables",
-         "table": "tables"}
+         "table": "tables", "chapter_table": "spice_tables", "rows_table": "spice_tables",
+         "confirm_table": "spice_tables"}
 
 __all__ = sorted(_HOME)
 

@@ -5,7 +5,9 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from ..core import series
-from ..design import class_d, commutation, current_limiter, limiter_network
+from ..design import class_d, commutation, limiter
+from ..design.class_d import model
+from ..design.limiter import model as limiter_network
 from ..sources.an94002 import circuit as an94002
 from .figures import axes
 
@@ -20,7 +22,7 @@ def limiter_histogram(result, others: dict | None = None, n: int = 100_000):
     bins = np.linspace(0, top, 121)
     stats = {}
     for label, (r7, network) in runs.items():
-        mc = current_limiter.monte_carlo_trip(r7, network, s, n=n, seed=1)
+        mc = limiter.monte_carlo_trip(r7, network, s, n=n, seed=1)
         stats[label] = mc
         ax.hist(mc["samples"], bins=bins, alpha=0.5, label=f"{label}: yield {mc['yield']:.1%}")
     for x in (s["i_no_trip"], s["i_must_trip"]):
@@ -55,7 +57,7 @@ def limiter_design_space(result, marks: dict | None = None):
 
 
 def limiter_sensitivity(rows):
-    """Bar chart of :func:`current_limiter.sensitivity`: each source's share of the trip-current spread."""
+    """Bar chart of :func:`handbook.design.limiter.analysis.sensitivity`: each source's share of the trip-current spread."""
     fig, ax = plt.subplots(figsize=(7, 3))
     names = [r[0] for r in rows][::-1]
     ax.barh(names, [r[1] * 100 for r in rows][::-1], color="C0")
@@ -115,16 +117,15 @@ def start_settling(result, others: dict | None = None):
 def class_d_margins(result, others: dict | None = None):
     """Every check's margin at its worst tolerance corner (what binds is the shortest bar); others: more
     {label: margins} to compare, e.g. the datasheet's own parts."""
-    from ..design.class_d_model import CHECKS
 
     runs = {"this design": result.figures["margins"], **(others or {})}
     fig, ax = plt.subplots(figsize=(7, 4))
-    y = np.arange(len(CHECKS))
+    y = np.arange(len(model.CHECKS))
     h = 0.8 / len(runs)
     for k, (label, m) in enumerate(runs.items()):
-        ax.barh(y + k * h, [max(-1.0, min(1.0, m[c])) * 100 for c in CHECKS], height=h, label=label)
+        ax.barh(y + k * h, [max(-1.0, min(1.0, m[c])) * 100 for c in model.CHECKS], height=h, label=label)
     ax.axvline(0, color="k", lw=1)
-    ax.set_yticks(y + h * (len(runs) - 1) / 2, CHECKS)
+    ax.set_yticks(y + h * (len(runs) - 1) / 2, model.CHECKS)
     ax.invert_yaxis()
     ax.set_xlabel("margin at the worst corner (%; clipped to ±100)")
     # above the axes: inside, a fixed corner covers some check's bars
@@ -135,7 +136,6 @@ def class_d_margins(result, others: dict | None = None):
 
 def class_d_design_space(result):
     """The (L, C_BYP) plane at the chosen R_OSC: which check fails first where, the choice marked."""
-    from ..design import class_d_model as model
 
     s = result.spec
     _, ls, cs = model.axes(s, result.r_dly)

@@ -5,24 +5,14 @@ Everything shown is rounded and free of addresses or timings, so nbval can compa
 from __future__ import annotations
 
 from IPython.display import Markdown
-from matplotlib.ticker import EngFormatter
 
 from ..core.claim import UNIT_SCALES
+from ..core.units import eng  # noqa: F401 (report.eng, as the chapters call it)
 
 #: status -> short badge used in tables
 BADGE = {"exact": "exact", "rounding": "rounding", "bound met": "bound met",
          "conservative": "conservative (rounded to the safe side)", "misprint": "**misprint**",
          "inconsistent": "**inconsistent**", "wrong method": "**wrong method**", "n/a": "n/a"}
-
-
-def eng(value: float, unit: str = "", digits: int = 4) -> str:
-    """An SI value to ``digits`` significant figures with a prefix: eng(1.455e-8, 'F') -> '14.55 nF'."""
-    value = float(f"{float(value):.{digits}g}")
-    if unit in ("1", ""):
-        return f"{value:g}"
-    if unit == "%":
-        return f"{value * 100:g} %"
-    return EngFormatter(unit=unit, places=None, sep=" ")(value)
 
 
 def _cell(x) -> str:
@@ -107,8 +97,8 @@ def table(header: list[str], rows: list[list]) -> Markdown:
 
 def design_table(table_name: str, result) -> Markdown:
     """One design's results as a table (values with units), or what can be met when nothing can."""
-    from ..design.schema import OUTPUTS
     from ..design.solvers import Infeasible
+    from ..design.spec import OUTPUTS
 
     if isinstance(result, Infeasible):
         extra = "; ".join(achievable_text(table_name, k, v) for k, v in result.achievable.items() if v is not None)
@@ -124,7 +114,7 @@ _ACHIEVABLE_UNITS = (("ratio", "1"), ("margin", "%"), ("rpm", "rpm"), ("cap", "F
 
 def achievable_text(table_name: str, key: str, value) -> str:
     """One "what can be met" figure as a person reads it: its label and its value with its unit."""
-    from ..design.schema import OUTPUTS
+    from ..design.spec import OUTPUTS
 
     out = next((o for o in OUTPUTS.get(table_name, ()) if o.key == key), None)
     if out is not None:

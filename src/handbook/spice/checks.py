@@ -2,31 +2,25 @@
 designs confirmed by simulation (`python -m handbook design SPEC.toml --spice`)."""
 from __future__ import annotations
 
-from importlib import import_module
-
+from . import class_d, converter, decoupling, limiter_design, limiters, speed, timers
 from .circuit import evaluate
 from .runner import SpiceError, SpiceUnavailable, available, why_unavailable
 
-#: the circuit builders, "module:function" under handbook.spice, each () -> Circuit with the notes' values
-BUILDERS: tuple[str, ...] = (
-    "limiters:one_transistor", "limiters:opamp", "limiters:opamp_corner", "limiters:supply_referenced",
-    "timers:start_oscillator", "timers:commutation_delay", "timers:watchdog", "speed:circuit", "speed:loop_filter",
-    "decoupling:circuit",
-    "class_d:circuit", "class_d:circuit_8ohm", "class_d:ripple", "class_d:ripple_8ohm", "converter:circuit",
+#: the circuit builders, each () -> Circuit with the notes' values
+BUILDERS = (
+    limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limiters.supply_referenced,
+    timers.start_oscillator, timers.commutation_delay, timers.watchdog, speed.circuit, speed.loop_filter,
+    decoupling.circuit,
+    class_d.circuit, class_d.circuit_8ohm, class_d.ripple, class_d.ripple_8ohm, converter.circuit,
 )
 
-#: design table -> "module:function" taking that design's result, returning its SPICE figures
-DESIGN_CHECKS = {"commutation": "timers:design_check", "current_limiter": "limiters:design_check",
-                 "class_d": "class_d:design_check"}
-
-
-def _load(path: str):
-    module, name = path.split(":")
-    return getattr(import_module(f"{__package__}.{module}"), name)
+#: design table -> the function taking that design's result, returning its SPICE figures
+DESIGN_CHECKS = {"commutation": timers.design_check, "current_limiter": limiter_design.design_check,
+                 "class_d": class_d.design_check}
 
 
 def circuits() -> list:
-    return [_load(b)() for b in BUILDERS]
+    return [build() for build in BUILDERS]
 
 
 def rows() -> list[dict]:
@@ -55,7 +49,7 @@ def confirm(results: dict) -> dict:
     out = {}
     for table, result in results.items():
         if table in DESIGN_CHECKS and hasattr(result, "spec"):
-            out[table] = judged(table, _load(DESIGN_CHECKS[table])(result))
+            out[table] = judged(table, DESIGN_CHECKS[table](result))
     return out
 
 
@@ -129,29 +123,13 @@ def warnings(table: str, figures: dict) -> list[str]:
         out.append("a corner's CAP-CD swing reached its window at rpm_min: the design does not fit")
     if figures.get("meets_spec") is False:
         out.append("SPICE's figures miss the spec")
-    from ..report.tables import eng
+    from ..core.units import eng
 
     units = {key: unit for _q, unit, key, *_ in CONFIRM[table]}
     for key in figures.get("differs", ()):
         out.append(f"SPICE's {key} = {eng(figures[key], units.get(key, ''))} is outside its tolerance of the "
                    f"design's {eng(figures[key + '_equation'], units.get(key, ''))}")
     return out
-
-
-def confirm_table(table: str, result):
-    """The design chapters' "Confirmed by simulation" table: quantity, the design's figure, SPICE's, the
-    difference, the tolerance and the verdict, with each tolerance's reason below; or why it was skipped."""
-    from IPython.display import Markdown
-
-    from .circuit import rows_table
-
-    try:
-        rows = confirm_rows(table, result)
-    except SpiceUnavailable as exc:
-        return Markdown(f"*SPICE check skipped: {exc}.*")
-    except SpiceError as exc:
-        return Markdown(f"**SPICE run failed:** {exc}.")
-    return rows_table(rows, equation_head="design (equations)")
 
 
 __all__ = ["CONFIRM", "SpiceError", "SpiceUnavailable", "available", "circuits", "confirm", "confirm_rows", "judged", "rows",

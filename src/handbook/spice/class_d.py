@@ -23,8 +23,8 @@ from functools import partial
 
 import numpy as np
 
-from ..design import class_d_model as model
-from ..report.tables import eng
+from ..core.units import eng
+from ..design.class_d import model
 from ..sources import lm4651
 from ..sources.lm4651 import circuit as eqs
 from .circuit import Check, Circuit, Part, with_defaults

@@ -25,7 +25,7 @@ from functools import partial
 
 import numpy as np
 
-from ..report.tables import eng
+from ..core.units import eng
 from ..sources import tca5600
 from .circuit import Check, Circuit, Part, with_defaults
 from .runner import run

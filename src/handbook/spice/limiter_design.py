@@ -26,7 +26,7 @@ def design_candidates(result) -> list[dict]:
     each of R7, R9..R13 at either end of its tolerance (64), the zener at either end of its tolerance and drift,
     the offset at either sign, and the two bias currents at each of the six vertices of their polygon (both at
     +-I_B, or one of them I_os smaller, from the spec's input_offset_current): 1536 corners."""
-    from ..design import limiter_network as net
+    from ..design.limiter import model as net
 
     s = result.spec
     t, ib, off = s["resistor_tolerance"], s["input_bias"], s["offset"]
@@ -100,7 +100,7 @@ def _first_crossing(x, y, level) -> float:
 
 
 def design_check(result) -> dict:
-    """A current-limiter design (handbook.design.current_limiter) simulated at every candidate corner
+    """A current-limiter design (handbook.design.limiter) simulated at every candidate corner
     (:func:`design_candidates`, 1536 copies in 48 DC runs of 32; the design's own corner choice is not used) and
     SPICE's own extremes kept: "i_trip_min", "i_trip_max" (A), "headroom_min" (V, the least of V_s - V+ and
     V_s - V- at no motor current), each beside the design's own figure ("*_equation"); "ok": at every corner

@@ -21,7 +21,7 @@ from ..core import series
 from ..sources import an93008, an94002
 from ..sources.an94002.parts import PARTS
 from . import models
-from .circuit import Check, Circuit, Part, chapter_table  # noqa: F401 (the chapters' table)
+from .circuit import Check, Circuit, Part
 from .runner import run
 
 RAMP = 1.0  # s: the motor current's ramp (slow against the LM358's 7 Hz pole, see the checks' tolerances)
@@ -215,8 +215,8 @@ def opamp(p: dict | None = None) -> Circuit:
 def corner_defaults() -> dict:
     """The note's network at the corner of least headroom of the design chapter's judgement: D1 at its lowest
     (tolerance 6.1 % and drift, the design spec), R12 low and R13 high by their 1 %, bias 500 nA."""
-    from ..design import current_limiter as design
-    from ..design import limiter_network as net
+    from ..design import limiter as design
+    from ..design.limiter import model as net
 
     s = design.checked({})
     p = opamp_defaults()
@@ -238,7 +238,7 @@ def corner_equations(p: dict) -> dict:
     """The corner's figures from the project's equations: least headroom of V+ (eq 11 with the bias, as the
     design's limiter_network computes it), the sense voltage at which V+ comes back to 2 V below the supply,
     and the trip eq 13 with the offset and bias (limiter_network's node equation)."""
-    from ..design import limiter_network as net
+    from ..design.limiter import model as net
 
     s = p["spec"]
     r_p = p["r12"] * p["r13"] / (p["r12"] + p["r13"])
@@ -366,22 +366,3 @@ def waveforms(circuit: Circuit, vectors: dict[str, str], points: int = 400) -> d
     cols = {"time": data[pick, 0]}
     cols.update({name: data[pick, 2 * k + 1] for k, name in enumerate(vectors)})
     return cols
-
-
-def design_check(result) -> dict:
-    """The designed limiter at every candidate corner (see :mod:`.limiter_design`)."""
-    from .limiter_design import design_check as check
-
-    return check(result)
-
-
-def design_corners(result):
-    from .limiter_design import design_corners as corners
-
-    return corners(result)
-
-
-def design_candidates(result):
-    from .limiter_design import design_candidates as candidates
-
-    return candidates(result)

@@ -16,10 +16,10 @@ the IC's logic is modelled, not copied, and these are the assumptions:
 """
 from __future__ import annotations
 
-from ..report.tables import eng
+from ..core.units import eng
 from ..sources import an94002 as note
 from ..sources.an94002.parts import PARTS
-from .circuit import Check, Circuit, Part, chapter_table, with_defaults  # noqa: F401 (the chapters' table)
+from .circuit import Check, Circuit, Part, with_defaults
 from .runner import run
 
 TDA5144 = "TDA5144 datasheet (June 1994), via datasheet_facts.md"

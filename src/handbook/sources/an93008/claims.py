@@ -36,6 +36,13 @@ def _drift_pct(p):
 
 
 def build() -> list[Claim]:
+    """Every AN93008 claim: the one-transistor, the supply-referenced and the zener limiter.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     return [
         Claim(id="an93008-vbe-tc", where=f"{NAME} 2.1", quantity="temperature coefficient of the one-transistor limit",
               printed=Printed("-0.25", "%/K"), compute=lambda p: p["v_be_tc"] / p["v_be"],

@@ -24,6 +24,13 @@ def _v_minus():
 
 
 def eq1() -> Equation:
+    """Eq 1: the level-shifted sense voltage at V+ (KCL at V+).
+
+    Returns
+    -------
+    Equation
+        The record ``an93008-eq1``: V_+ (V) against V_supply, V_cs (V), R8 and R9 (ohm).
+    """
     return Equation(
         id="an93008-eq1", source=f"{NAME} 2.2, eq (1)", title="Level-shifted sense voltage at V+", lhs=Vp, lhs_unit=V,
         printed=Vs * R9 / (R8 + R9) - Vcs * R9 / (R8 + R9), derived=_v_plus(), units=UNITS,
@@ -32,6 +39,13 @@ def eq1() -> Equation:
 
 
 def eq2() -> Equation:
+    """Eq 2: eq 1 with R8 = 7.5 k and R9 = 33 k, V+ = 0.815 (V_supply - V_cs).
+
+    Returns
+    -------
+    Equation
+        The record ``an93008-eq2``: V_+ (V) against V_supply and V_cs (V), constant rounded.
+    """
     return Equation(
         id="an93008-eq2", source=f"{NAME} 2.2, eq (2)", title="Eq 1 with R8 = 7.5 k, R9 = 33 k", lhs=Vp, lhs_unit=V,
         printed=sp.Rational("0.815") * (Vs - Vcs), derived=_v_plus(), units=UNITS,
@@ -40,6 +54,13 @@ def eq2() -> Equation:
 
 
 def eq4() -> Equation:
+    """Eq 4: the reference at V-, V_supply R11 / (R10 + R11).
+
+    Returns
+    -------
+    Equation
+        The record ``an93008-eq4``: V_- (V) against V_supply (V), R10 and R11 (ohm).
+    """
     return Equation(
         id="an93008-eq4", source=f"{NAME} 2.2, eq (4)", title="Reference at V-", lhs=Vm, lhs_unit=V,
         printed=Vs * R11 / (R10 + R11), derived=_v_minus(), units=UNITS,
@@ -47,6 +68,13 @@ def eq4() -> Equation:
 
 
 def eq6() -> Equation:
+    """Eq 3 to 6: the sense voltage at the trip point, V_supply (1 - B/A).
+
+    Returns
+    -------
+    Equation
+        The record ``an93008-eq6``: V_cs (V) against V_supply (V) and R8 to R11 (ohm).
+    """
     return Equation(
         id="an93008-eq6", source=f"{NAME} 2.2, eq (3) to (6)", title="Sense voltage at the trip point", lhs=Vcs,
         lhs_unit=V, printed=(Vs - B / A * Vs).subs(SUB), derived=sp.solve(sp.Eq(_v_plus(), _v_minus()), Vcs)[0],
@@ -55,6 +83,13 @@ def eq6() -> Equation:
 
 
 def eq7() -> Equation:
+    """Eq 7: B for a wanted V_cs, A (V_supply - V_cs) / V_supply.
+
+    Returns
+    -------
+    Equation
+        The record ``an93008-eq7``: B, a pure number, against V_supply, V_cs (V), R8 and R9 (ohm).
+    """
     return Equation(
         id="an93008-eq7", source=f"{NAME} 2.2, eq (7)", title="B for a wanted V_cs", lhs=B, lhs_unit=sp.Integer(1),
         printed=(A * (Vs - Vcs) / Vs).subs(SUB), derived=sp.solve(sp.Eq(Vs - B / A * Vs, Vcs), B)[0].subs(SUB),
@@ -62,4 +97,11 @@ def eq7() -> Equation:
 
 
 def build() -> list[Equation]:
+    """Every AN93008 equation record (figure 3, eq 1 to 7).
+
+    Returns
+    -------
+    list of Equation
+        Equations 1, 2, 4, 6 and 7, in the note's order.
+    """
     return [eq1(), eq2(), eq4(), eq6(), eq7()]

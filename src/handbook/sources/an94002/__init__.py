@@ -45,12 +45,32 @@ from .circuit import (
     watchdog_time,
 )
 from .data import FACTS, NAME
-from .parts import PART_ROLES, PARTS, PARTS_HEADER, decode_12nc, parts_rows
+from .parts import PART_ROLES, PARTS, PARTS_HEADER, decode_12nc
+from .parts import parts_rows as _parts_rows
 
 SOURCE = Source(name=NAME, title="TDA5143/TDA5144 evaluation board", parameters=data.PARAMETERS,
                 facts=FACTS, equations_module=f"{__name__}.equations",
                 build_claims=claims.build, errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
+
+
+def parts_rows(p: dict, checks: list[dict] | None = None) -> list[list[str]]:
+    """The parts list for the board of ``p``: see :func:`.parts.parts_rows` (``checks`` default: the source's own
+    evaluation at ``p``).
+
+    Parameters
+    ----------
+    p : dict
+        The board's parameters (:func:`params`).
+    checks : list of dict or None
+        Rows of :func:`evaluate` at ``p``, if already computed.
+
+    Returns
+    -------
+    list of list of str
+        One row of text per part.
+    """
+    return _parts_rows(p, evaluate(p) if checks is None else checks)
 
 __all__ = [
     "FACTS", "NAME", "PARTS", "PARTS_HEADER", "PART_ROLES", "SOURCE", "c_min_for_impedance", "cap_cd_min",

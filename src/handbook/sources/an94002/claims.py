@@ -25,44 +25,151 @@ TDA5144 = "TDA5144 datasheet"
 
 
 def fact(key: str, index: int):
-    """A claim's computation that returns one of a fact's figures (it reads no parameter)."""
+    """A claim's computation that returns one of a fact's figures (it reads no parameter).
+
+    Parameters
+    ----------
+    key : str
+        The fact's name in :data:`~handbook.sources.an94002.data.FACTS`.
+    index : int
+        Which of its figures (they are tuples: min/typ/max, low/high).
+
+    Returns
+    -------
+    callable
+        A function of the parameters (which it ignores) returning the figure, SI units.
+    """
     return lambda p: FACTS[key].value[index]
 
 
 def cap_st(p):
-    """CAP-ST for the chosen start frequency (eq 1)."""
+    """CAP-ST for the chosen start frequency (eq 1).
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``f_start`` (Hz), ``i_cap_st`` (A),
+        ``v_st_low`` and ``v_st_high`` (V).
+
+    Returns
+    -------
+    float
+        CAP-ST, F.
+    """
     return cap_st_for(1 / p["f_start"], p["i_cap_st"], p["v_st_low"], p["v_st_high"])
 
 
 def cap_st_choice(p):
+    """CAP-ST chosen: the value of ``cap_st_series`` nearest the eq 1 value.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``cap_st_series`` and what :func:`cap_st`
+        reads.
+
+    Returns
+    -------
+    float
+        CAP-ST, F.
+    """
     return series.nearest(p["cap_st_series"], cap_st(p))
 
 
 def window(p):
-    """The smallest CAP-CD window dV_capmin."""
+    """The smallest CAP-CD window dV_capmin.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_cd_high_min`` and ``v_cd_low_max``, V.
+
+    Returns
+    -------
+    float
+        The window, V.
+    """
     return p["v_cd_high_min"] - p["v_cd_low_max"]
 
 
 def capcd_bound(p):
+    """The CAP-CD lower bound (eq 5/6) at ``rpm_min`` with the largest charge current and the window.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``rpm_min`` (rpm), ``pole_pairs``,
+        ``i_charge_max`` (A) and what :func:`window` reads.
+
+    Returns
+    -------
+    float
+        The smallest CAP-CD, F.
+    """
     return cap_cd_min(p["rpm_min"], p["pole_pairs"], p["i_charge_max"], window(p))
 
 
 def cap_cd_choice(p):
+    """CAP-CD chosen: the smallest series value meeting the bound at its low tolerance end.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads what :func:`capcd_bound` reads,
+        ``cap_tolerance`` and ``cap_series``.
+
+    Returns
+    -------
+    float
+        CAP-CD, F.
+    """
     return choose_cap_cd(p["rpm_min"], p["pole_pairs"], p["i_charge_max"], window(p), p["cap_tolerance"],
                          p["cap_series"])[0]
 
 
 def vmot_max(p):
+    """The highest controllable V_mot: the lowest supply less the drop R7 and T1 need.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_supply``, ``v_drop_min`` (V) and
+        ``supply_tolerance``.
+
+    Returns
+    -------
+    float
+        V_mot, V.
+    """
     return v_mot_max(p["v_supply"], p["supply_tolerance"], p["v_drop_min"])
 
 
 def r13_max(p):
-    """The largest E24 R13 keeping the level shift at the lowest zener voltage."""
+    """The largest E24 R13 keeping the level shift at the lowest zener voltage.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``level_shift_min`` (V), ``r12`` (ohm),
+        ``v_zener`` (V) and ``zener_tolerance``.
+
+    Returns
+    -------
+    float
+        R13, ohm.
+    """
     k = p["level_shift_min"] / vd1_min(p)
     return series.at_most("E24", p["r12"] * (1 - k) / k)
 
 
 def start() -> list[Claim]:
+    """The claims of section 2.1.1, the start oscillator.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     ch = "start"
     return [
         Claim(id="an94002-fosc", where=f"{NAME} 2.1.1", quantity="rotor oscillation frequency f_osc",
@@ -88,6 +195,13 @@ def start() -> list[Claim]:
 
 
 def commutation() -> list[Claim]:
+    """The claims of section 2.1.2, the adaptive commutation delay.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     ch = "commutation"
     return [
         Claim(id="an94002-window", where=f"{NAME} 2.1.2", quantity="smallest CAP-CD window dV_capmin = 2.3 - 0.9",
@@ -120,6 +234,13 @@ def commutation() -> list[Claim]:
 
 
 def watchdog() -> list[Claim]:
+    """The claims of section 2.1.3, the watchdog.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     ch = "watchdog"
     return [
         Claim(id="an94002-eq9-constant", where=f"{NAME} 2.1.3, eq (9)", quantity="CAP-TI per second of watchdog time",
@@ -133,6 +254,13 @@ def watchdog() -> list[Claim]:
 
 
 def speed() -> list[Claim]:
+    """The claims of section 2.2, the speed control.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     ch = "speed"
     return [
         Claim(id="an94002-vmot-max", where=f"{NAME} 2.2", quantity="highest controllable V_mot",
@@ -147,6 +275,13 @@ def speed() -> list[Claim]:
 
 
 def one_transistor() -> list[Claim]:
+    """The claims of section 2.3, the one-transistor limiter.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     ch = "one_transistor"
     return [
         Claim(id="an94002-vbe-tc", where=f"{NAME} 2.3", quantity="temperature coefficient of the one-transistor limit",
@@ -162,6 +297,13 @@ def one_transistor() -> list[Claim]:
 
 
 def decoupling() -> list[Claim]:
+    """The claims of section 3, the supply decoupling.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     return [
         Claim(id="an94002-c2", where=f"{NAME} 3", quantity="C2 capacitance for |Z| < 2 ohm at 2 MHz (ideal capacitor)",
               printed=Printed("10", "uF"), chapter="decoupling",
@@ -172,6 +314,13 @@ def decoupling() -> list[Claim]:
 
 
 def parts() -> list[Claim]:
+    """The claims of section 4, the parts list.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the note's order.
+    """
     ch = "parts"
     return [
         Claim(id="an94002-r3", where=f"{NAME} 4, parts list R3",
@@ -193,6 +342,12 @@ def parts() -> list[Claim]:
 
 
 def build() -> list[Claim]:
-    """Every AN94002 claim, in the note's order."""
+    """Every AN94002 claim, in the note's order.
+
+    Returns
+    -------
+    list of Claim
+        Every claim, the op-amp limiter's (:mod:`.claims_limiter`) included.
+    """
     return (start() + commutation() + watchdog() + speed() + one_transistor() + claims_limiter.build()
             + decoupling() + parts())

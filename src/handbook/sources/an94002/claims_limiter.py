@@ -9,37 +9,114 @@ WHERE = f"{NAME} 2.4"
 
 
 def a(p):
-    """The level-shift factor A = R13 / (R12 + R13)."""
+    """The level-shift factor A = R13 / (R12 + R13).
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``r12`` and ``r13``, ohm.
+
+    Returns
+    -------
+    float
+        A, a pure number.
+    """
     return factor_a(p["r12"], p["r13"])
 
 
 def vd1_min(p):
-    """The lowest zener voltage."""
+    """The lowest zener voltage.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_zener`` (V) and ``zener_tolerance``.
+
+    Returns
+    -------
+    float
+        V_D1 at the low end of its tolerance, V.
+    """
     return p["v_zener"] * (1 - p["zener_tolerance"])
 
 
 def seen(p):
-    """The sense signal at the op-amp input, A V_cs."""
+    """The sense signal at the op-amp input, A V_cs.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``r12``, ``r13`` (ohm) and ``v_cs`` (V).
+
+    Returns
+    -------
+    float
+        A V_cs, V.
+    """
     return a(p) * p["v_cs"]
 
 
 def zener_drift(p):
+    """The zener's drift over the temperature excursion: TC x temperature span.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``zener_tc`` (V/K) and ``temp_span`` (K).
+
+    Returns
+    -------
+    float
+        The drift, V.
+    """
     return p["zener_tc"] * p["temp_span"]
 
 
 def largest_excursion(p, include=("resistors", "zener", "offset")):
-    """The exact worst case of the trip voltage over the tolerances in ``include``, as a fraction."""
+    """The exact worst case of the trip voltage over the tolerances in ``include``, as a fraction.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); as
+        :func:`~handbook.sources.an94002.circuit.trip_worst_case` reads them.
+    include : tuple of str
+        The spreads taken: ``"resistors"``, ``"zener"``, ``"offset"``.
+
+    Returns
+    -------
+    float
+        The larger of the relative deviations of the trip voltage below and above nominal, a fraction.
+    """
     wc = trip_worst_case(p, include=include)
     return max(abs(wc.rel_low), abs(wc.rel_high))
 
 
 def zener_spread(p):
-    """The BZX79-C8V2's datasheet spread about the nominal V_Z: the larger of its two sides, as a fraction."""
+    """The BZX79-C8V2's datasheet spread about the nominal V_Z: the larger of its two sides, as a fraction.
+
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_zener``, V.
+
+    Returns
+    -------
+    float
+        The spread, a fraction of ``v_zener``.
+    """
     low, high = FACTS["bzx79_vz"].value
     return max(p["v_zener"] - low, high - p["v_zener"]) / p["v_zener"]
 
 
 def build() -> list[Claim]:
+    """Every claim of section 2.4, the op-amp limiter.
+
+    Returns
+    -------
+    list of Claim
+        The inputs' claims, then the tolerance budget's.
+    """
     return _inputs("opamp") + _budget("opamp")
 
 

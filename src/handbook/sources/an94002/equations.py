@@ -40,28 +40,76 @@ TI_VALUES = {I_wd: 5 * uA, V_hi: sp.Rational("2.2") * V, V_lo: sp.Rational("0.3"
 
 
 def collected(expr, symbols):
-    """``expr`` as one fraction with its numerator collected in ``symbols`` (for display; same value)."""
+    """``expr`` as one fraction with its numerator collected in ``symbols`` (for display; same value).
+
+    Parameters
+    ----------
+    expr : sympy.Expr
+        The expression.
+    symbols : tuple of sympy.Symbol
+        The symbols the numerator is collected in.
+
+    Returns
+    -------
+    sympy.Expr
+        The same value, as numerator / denominator.
+    """
     num, den = sp.fraction(sp.together(expr))
     return sp.collect(sp.expand(num), symbols, sp.factor) / den
 
 
 def timer_law(charge, current, time, window):
-    """Charge balance on a capacitor charged at a constant current: I t = C dV, solved for ``charge``."""
+    """Charge balance on a capacitor charged at a constant current: I t = C dV, solved for ``charge``.
+
+    Parameters
+    ----------
+    charge : sympy.Symbol
+        The unknown solved for (usually the capacitance C).
+    current : sympy.Expr
+        The constant charge current I (A).
+    time : sympy.Expr
+        The charging time t (s).
+    window : sympy.Expr
+        The voltage swing dV (V).
+
+    Returns
+    -------
+    sympy.Expr
+        ``charge`` expressed in the others (C = I t / dV).
+    """
     return sp.solve(sp.Eq(current * time, charge * window), charge)[0]
 
 
 def v_plus():
-    """V+ from KCL: R12 from V_s - V_cs, R13 to V_s - V_D1."""
+    """V+ from KCL: R12 from V_s - V_cs, R13 to V_s - V_D1.
+
+    Returns
+    -------
+    sympy.Expr
+        V_+ in V_s, V_cs, V_D1, R12 and R13.
+    """
     return sp.solve(sp.Eq((V_s - V_cs - V_p) / R12, (V_p - (V_s - V_D1)) / R13), V_p)[0]
 
 
 def v_minus():
-    """V- from KCL: R9 + R10 from V_s, R11 to V_s - V_D1."""
+    """V- from KCL: R9 + R10 from V_s, R11 to V_s - V_D1.
+
+    Returns
+    -------
+    sympy.Expr
+        V_- in V_s, V_D1, R9, R10 and R11.
+    """
     return sp.solve(sp.Eq((V_s - V_m) / (R9 + R10), (V_m - (V_s - V_D1)) / R11), V_m)[0]
 
 
 def v_cs_at_trip():
-    """Eq 13 derived: V+ = V- solved for V_cs."""
+    """Eq 13 derived: V+ = V- solved for V_cs.
+
+    Returns
+    -------
+    sympy.Expr
+        V_cs in V_D1 and R9 to R13.
+    """
     return sp.solve(sp.Eq(v_plus(), v_minus()), V_cs)[0]
 
 
@@ -69,6 +117,13 @@ def v_cs_at_trip():
 # 2.1.1 start oscillator
 
 def eq1() -> Equation:
+    """Eq 1: the start oscillator's period from CAP-ST (the constant 2.15 hides s/uF).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq1``: t_start (s) against C_ST (printed in uF).
+    """
     t_half = sp.solve(sp.Eq(I_st * t, C_ST * (V_hi - V_lo)), t)[0]
     return Equation(
         id="an94002-eq1", source=f"{NAME} 2.1.1, eq (1)", title="Start oscillator period (CAP-ST)",
@@ -82,6 +137,13 @@ def eq1() -> Equation:
 
 
 def eq2() -> Equation:
+    """Eq 2: the rotor's oscillation frequency about a detent (rebuilt from a garbled OCR).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq2``: f_osc (Hz) against K_t, I, p and J.
+    """
     sol = sp.solve(sp.Eq(J * s_ ** 2 + K_t * I_m * p_, 0), s_)
     omega = sp.im(sol[1]) if sp.im(sol[1]).is_positive else sp.im(sol[0])
     return Equation(
@@ -102,6 +164,13 @@ def eq2() -> Equation:
 # 2.1.2 adaptive commutation delay
 
 def eq3() -> Equation:
+    """Eq 3: the electrical cycle time, 60 / (RPM n).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq3``: t_cyc (s).
+    """
     return Equation(
         id="an94002-eq3", source=f"{NAME} 2.1.2, eq (3)", title="Electrical cycle time",
         lhs=t_cyc, lhs_unit=S, lhs_scale=S, printed=60 / (RPM * n), scales={RPM: N * u.minute},
@@ -112,6 +181,13 @@ def eq3() -> Equation:
 
 
 def eq4() -> Equation:
+    """Eq 4: the time between commutations, 10 / (RPM n).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq4``: t_com (s).
+    """
     return Equation(
         id="an94002-eq4", source=f"{NAME} 2.1.2, eq (4)", title="Time between commutations",
         lhs=t_com, lhs_unit=S, lhs_scale=S, printed=10 / (RPM * n), scales={RPM: N * u.minute},
@@ -121,7 +197,13 @@ def eq4() -> Equation:
 
 
 def eq5() -> Equation:
-    """CAP-CD from charge balance (general form)."""
+    """CAP-CD from charge balance (general form).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq5``: C_CD (F) against I (A), RPM and dV (V).
+    """
     return Equation(
         id="an94002-eq5", source=f"{NAME} 2.1.2, eq (5)", title="CAP-CD from its charge per commutation",
         lhs=C_CD, lhs_unit=F, lhs_scale=F, printed=I * 10 / (RPM * n * dV),
@@ -134,7 +216,13 @@ def eq5() -> Equation:
 
 
 def eq6() -> Equation:
-    """The numeric bound with the constant 160."""
+    """The numeric bound with the constant 160.
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq6``: the bound C_CD >= 160 / (RPM_min n) (C in uF).
+    """
     return Equation(
         id="an94002-eq6", source=f"{NAME} 2.1.2, eq (6)", title="CAP-CD lower bound, 160/(RPM_min n)",
         lhs=C_CD, lhs_unit=F, lhs_scale=uF, relation=">=",
@@ -150,6 +238,13 @@ def eq6() -> Equation:
 
 
 def eq7() -> Equation:
+    """Eq 7: the highest reliable speed for a given CAP-CD (the noise floor's swing).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq7``: RPM_max (rpm) against I_ch,min (A), dV_noise (V), n and C_CD (F).
+    """
     return Equation(
         id="an94002-eq7", source=f"{NAME} 2.1.2, eq (7)", title="Highest reliable speed for a given CAP-CD",
         lhs=N_max, lhs_unit=1 / S, lhs_scale=1 / u.minute,
@@ -165,6 +260,13 @@ def eq7() -> Equation:
 
 
 def eq8() -> Equation:
+    """Eq 8: the speed range RPM_max / RPM_min of one capacitor.
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq8``: a pure number in the windows (V) and currents (A).
+    """
     n_min = sp.solve(sp.Eq(I_max / (6 * n * N_min), C_CD * V_win), N_min)[0]
     n_max = sp.solve(sp.Eq(I_min / (6 * n * N_max), C_CD * V_noise), N_max)[0]
     return Equation(
@@ -180,6 +282,13 @@ def eq8() -> Equation:
 # 2.1.3 watchdog (two printed forms)
 
 def eq9() -> Equation:
+    """Eq 9, first form: CAP-TI = 5e-6 t_wd / 1.9 for a watchdog time.
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq9``: C_TI (F) against t_wd (s).
+    """
     return Equation(
         id="an94002-eq9", source=f"{NAME} 2.1.3, eq (9), first form", title="CAP-TI for a watchdog time",
         lhs=C_TI, lhs_unit=F, printed=5 * sp.Rational(1, 10 ** 6) * t_wd / sp.Rational("1.9"),
@@ -192,6 +301,13 @@ def eq9() -> Equation:
 
 
 def eq9b() -> Equation:
+    """Eq 9, second form: CAP-TI = 2.63 t_wd (C in uF, t_wd in s).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq9b``: C_TI (printed in uF) against t_wd (s).
+    """
     return Equation(
         id="an94002-eq9b", source=f"{NAME} 2.1.3, eq (9), second form", title="CAP-TI = 2.63 t_wd",
         lhs=C_TI, lhs_unit=F, printed=sp.Rational("2.63") * t_wd, lhs_scale=uF,
@@ -207,6 +323,13 @@ def eq9b() -> Equation:
 # 2.2 speed control
 
 def eq10() -> Equation:
+    """Eq 10: the speed-control divider, V_in = V_mot R4 / (R3 + R4).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq10``: V_in (V) against V_mot (V), R3 and R4 (ohm).
+    """
     v_node = sp.Symbol("V_node")
     node = sp.solve(sp.Eq((V_mot - v_node) / R3, v_node / R4), v_node)[0]
     return Equation(
@@ -221,6 +344,13 @@ def eq10() -> Equation:
 # 2.4 op-amp limiter: KCL at the op-amp inputs
 
 def eq11() -> Equation:
+    """Eq 11: the level-shifted sense voltage at the op-amp's V+.
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq11``: V_+ (V) against V_s, V_D1, V_cs (V), R12 and R13 (ohm).
+    """
     return Equation(
         id="an94002-eq11", source=f"{NAME} 2.4, eq (11)", title="Level-shifted sense voltage at V+",
         lhs=V_p, lhs_unit=V, printed=V_s - V_D1 + (V_D1 - V_cs) * R13 / (R12 + R13), derived=v_plus(),
@@ -231,6 +361,13 @@ def eq11() -> Equation:
 
 
 def eq11_num() -> Equation:
+    """Eq 11 with the board's values: V+ = V_s - 2.02 - 0.741 V_cs (volts).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq11-num``: V_+ (V) against V_s and V_cs (V), constants rounded.
+    """
     return Equation(
         id="an94002-eq11-num", source=f"{NAME} 2.4, eq (11) with R12 = 5.6 k, R13 = 16 k, V_D1 = 7.79 V",
         title="Eq 11 with the board's values", lhs=V_p, lhs_unit=V, lhs_scale=V,
@@ -245,6 +382,13 @@ def eq11_num() -> Equation:
 
 
 def eq12() -> Equation:
+    """Eq 12: the reference at the op-amp's V-.
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq12``: V_- (V) against V_s, V_D1 (V) and R9 to R11 (ohm).
+    """
     return Equation(
         id="an94002-eq12", source=f"{NAME} 2.4, eq (12)", title="Reference at V-",
         lhs=V_m, lhs_unit=V, printed=(V_s - V_D1) + V_D1 * R11 / (R9 + R10 + R11), derived=v_minus(),
@@ -255,6 +399,13 @@ def eq12() -> Equation:
 
 
 def eq13() -> Equation:
+    """Eq 13: the sense voltage at the trip point, V_D1 - V_D1 B / A.
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq13``: V_cs (V) against V_D1 (V) and R9 to R13 (ohm).
+    """
     return Equation(
         id="an94002-eq13", source=f"{NAME} 2.4, eq (13)", title="Sense voltage at the trip point",
         lhs=V_cs, lhs_unit=V, printed=(V_D1 - V_D1 * B_ / A_).subs(AB),
@@ -267,6 +418,13 @@ def eq13() -> Equation:
 
 
 def eq14() -> Equation:
+    """Eq 14: the trip point with matched dividers, V_cs = V_D1 R9 / (R9 + R10 + R11).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-eq14``: V_cs (V) against V_D1 (V), R9, R10 and R11 (ohm).
+    """
     return Equation(
         id="an94002-eq14", source=f"{NAME} 2.4, eq (14)", title="Sense voltage with matched dividers",
         lhs=V_cs, lhs_unit=V, printed=V_D1 * R9 / (R9 + R10 + R11),
@@ -277,6 +435,13 @@ def eq14() -> Equation:
 
 
 def level_shift() -> Equation:
+    """The level shift below the supply, V_D1 R12 / (R12 + R13) (text after eq 11).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-level-shift``: V_s - V_+ (V) at V_cs = 0.
+    """
     return Equation(
         id="an94002-level-shift", source=f"{NAME} 2.4, text after eq (11)", title="Level shift below the supply",
         lhs=sp.Symbol(r"V_s - V_{+}"), lhs_unit=V, printed=V_D1 * R12 / (R12 + R13),
@@ -287,7 +452,13 @@ def level_shift() -> Equation:
 
 
 def trip_offset() -> Equation:
-    """The trip point with the offset (this book's form, used for the tolerance analysis)."""
+    """The trip point with the offset (this book's form, used for the tolerance analysis).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-trip-offset``: V_cs (V) against V_D1, V_os (V) and R9 to R13 (ohm).
+    """
     vcs_os = sp.solve(sp.Eq(v_plus() - v_minus(), V_os), V_cs)[0]
     return Equation(
         id="an94002-trip-offset", source=f"{NAME} 2.4, text (offset referred to V_cs)",
@@ -301,6 +472,13 @@ def trip_offset() -> Equation:
 
 
 def stack_up() -> Equation:
+    """The note's tolerance stack-up, (1 + t1)(1 + t2)(1 + t3) - 1 (upper end).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-stack-up``: the total tolerance, a fraction.
+    """
     t1, t2, t3 = sp.symbols("t_1 t_2 t_3", positive=True)
     x1, x2, x3 = sp.symbols("x_1 x_2 x_3", positive=True)
     high = (x1 * x2 * x3).subs({x1: 1 + t1, x2: 1 + t2, x3: 1 + t3}) - 1  # each factor at its high end
@@ -319,6 +497,13 @@ def stack_up() -> Equation:
 # 2.3 one-transistor limiter, 3 decoupling
 
 def vbe_tc() -> Equation:
+    """The relative drift of the one-transistor limit, TC / V_be (section 2.3).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-vbe-tc``: (1/I_lim) dI_lim/dT (1/K) against TC (V/K) and V_be (V).
+    """
     i_lim = (V_be + TC * T) / R7
     return Equation(
         id="an94002-vbe-tc", source=f"{NAME} 2.3, text", title="Relative drift of the one-transistor limit",
@@ -330,6 +515,13 @@ def vbe_tc() -> Equation:
 
 
 def decoupling() -> Equation:
+    """The capacitance for |Z| below 2 ohm at 2 MHz, C >= 1 / (2 pi f |Z|) (section 3).
+
+    Returns
+    -------
+    Equation
+        The record ``an94002-decoupling``: the bound on C2 (F) against f (Hz) and |Z| (ohm).
+    """
     w = sp.Symbol("omega", positive=True)
     return Equation(
         id="an94002-decoupling", source=f"{NAME} 3, text", title="Capacitance for |Z| below 2 ohm at 2 MHz",
@@ -343,6 +535,12 @@ def decoupling() -> Equation:
 
 
 def build() -> list[Equation]:
-    """Every AN94002 equation, in the note's order."""
+    """Every AN94002 equation, in the note's order.
+
+    Returns
+    -------
+    list of Equation
+        The records, eq 1 to eq 14 and those the text implies.
+    """
     return [eq1(), eq2(), eq3(), eq4(), eq5(), eq6(), eq7(), eq8(), eq9(), eq9b(), eq10(), eq11(), eq11_num(),
             eq12(), eq13(), eq14(), level_shift(), trip_offset(), stack_up(), vbe_tc(), decoupling()]

@@ -71,6 +71,17 @@ def decode_12nc(code: str) -> float | None:
 
     For the SFR25 resistors the decade digit 9 means x 0.1 and 8 x 0.01 (ohms); for the MKT 370
     capacitors the code is in picofarads. Electrolytics (RSM 037) use another scheme: None.
+
+    Parameters
+    ----------
+    code : str
+        The 12NC as printed, spaces allowed ("2322 181 53229").
+
+    Returns
+    -------
+    float or None
+        The value, ohm for a resistor and F for an MKT 370 capacitor; None for an electrolytic or a code
+        that is not 12 digits long.
     """
     digits = code.replace(" ", "")
     if len(digits) != 12 or digits.startswith("2222037"):
@@ -87,7 +98,7 @@ def _symbol(unit: str) -> str:
 
 def _calculation(ref: str, claim_id: str | None, p: dict, checks: dict) -> str:
     """The text's calculation for one part: R7 and R9 designed from ``p``, else the claim that checks it."""
-    from ...report.tables import eng
+    from ...core.units import eng
 
     if ref == "R7":
         return (f"{eng(r7_for_limit(p['i_limit'], p['v_be']), 'Ω')} (O1, 0.8 V) or "
@@ -102,7 +113,7 @@ def _calculation(ref: str, claim_id: str | None, p: dict, checks: dict) -> str:
 
 def _decoded(ref: str, value: float | None, nc: str) -> str:
     """What the 12NC code decodes to, marked where it differs from the printed value."""
-    from ...report.tables import eng
+    from ...core.units import eng
 
     code_value = decode_12nc(nc)
     if code_value is None or value is None:
@@ -111,13 +122,23 @@ def _decoded(ref: str, value: float | None, nc: str) -> str:
     return eng(code_value, "F" if ref.startswith("C") else "Ω") + (" **differs**" if differs else "")
 
 
-def parts_rows(p: dict, checks: list[dict] | None = None) -> list[list[str]]:
+def parts_rows(p: dict, checks: list[dict]) -> list[list[str]]:
     """One row per part (columns :data:`PARTS_HEADER`): the printed value, its 12NC decoded, the part's role
-    and the text's calculation of it. ``checks`` are the evaluated claims (default: evaluated with ``p``)."""
-    if checks is None:
-        from . import SOURCE
+    and the text's calculation of it. ``checks`` are the evaluated claims at ``p``.
 
-        checks = SOURCE.evaluate(p)
+    Parameters
+    ----------
+    p : Mapping
+        The AN94002 parameters (names as in :mod:`.data`, SI units); R7 and R9 are designed from ``i_limit``
+        (A), ``v_be``, ``v_cs``, ``v_zener`` (V) and ``r10``, ``r11`` (ohm).
+    checks : list of dict
+        The evaluated claims at ``p``, as :meth:`~handbook.core.Source.evaluate` returns them.
+
+    Returns
+    -------
+    list of list of str
+        One row of text per part, in the columns of :data:`PARTS_HEADER`.
+    """
     by_id = {r["id"]: r for r in checks}
     rows = []
     for ref, printed, value, tol, option, kind, nc in PARTS:

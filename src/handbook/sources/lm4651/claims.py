@@ -70,6 +70,13 @@ I_CQ_SYSTEM = 124e-3
 
 
 def build() -> list[Claim]:
+    """Every LM4651/LM4652 claim: oscillator, Example Design and thermal numbers.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the datasheet's order.
+    """
     return [
         Claim(id="lm4651-f-4k", where=f"{NAME} table, R_OSC = 4 k",
               quantity="switching frequency at R_OSC = 4 k (eq 5)",

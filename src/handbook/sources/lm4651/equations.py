@@ -41,6 +41,13 @@ def _pt(where, at, inputs, text, unit, sig=None, through=None) -> TablePoint:
 
 
 def eq1() -> Equation:
+    """Eq 1: the start-up time, 8.4e4 C_START seconds.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq1``: the start-up time (s) against C_START (F), empirical.
+    """
     return Equation(
         id="lm4651-eq1", source=f"{NAME}, eq (1)", title="Start-up time", lhs=t, lhs_unit=S, lhs_scale=S,
         printed=sp.Integer(84000) * n[Cs], scales={n[Cs]: Cs / F}, units={Cs: F}, law=NO_LAW, empirical=True,
@@ -52,6 +59,13 @@ def eq1() -> Equation:
 
 
 def eq2() -> Equation:
+    """Eq 2: C_START for a start-up time, t / 8.5e4 farads.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq2``: C_START (F) against the start-up time (s), empirical.
+    """
     return Equation(
         id="lm4651-eq2", source=f"{NAME}, eq (2)", title="C_START for a start-up time", lhs=Cs, lhs_unit=F,
         lhs_scale=F, printed=n[t] / 85000, scales={n[t]: t / S}, units={t: S}, law=NO_LAW, empirical=True,
@@ -62,6 +76,13 @@ def eq2() -> Equation:
 
 
 def eq3() -> Equation:
+    """Eq 3: the short-circuit current limit against R_SCKT.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq3``: the current limit (A) against R_SCKT (ohm), empirical.
+    """
     return Equation(
         id="lm4651-eq3", source=f"{NAME}, eq (3)", title="Short-circuit current limit", lhs=I, lhs_unit=A,
         lhs_scale=A, printed=10 ** 5 / (10 ** 4 * n[Rp] / (10 ** 4 + n[Rp])), scales={n[Rp]: Rp / OHM}, units={Rp: OHM},
@@ -76,6 +97,13 @@ def eq3() -> Equation:
 
 
 def eq4() -> Equation:
+    """Eq 4: the dead time, 1.7e-12 (500 + R_DLY) seconds.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq4``: the dead time (s) against R_DLY (ohm), empirical.
+    """
     return Equation(
         id="lm4651-eq4", source=f"{NAME}, eq (4)", title="Dead time", lhs=T, lhs_unit=S, lhs_scale=S,
         printed=sp.Rational(17, 10 ** 13) * (500 + n[Rdly]), scales={n[Rdly]: Rdly / OHM}, units={Rdly: OHM},
@@ -89,6 +117,13 @@ def eq4() -> Equation:
 
 
 def eq5() -> Equation:
+    """Eq 5: the switching frequency, 1e9 / (4000 + R_OSC) hertz.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq5``: f_SW (Hz) against R_OSC (ohm), empirical.
+    """
     return Equation(
         id="lm4651-eq5", source=f"{NAME}, eq (5)", title="Switching frequency", lhs=f, lhs_unit=HZ, lhs_scale=HZ,
         printed=10 ** 9 / (4000 + n[Rosc]), scales={n[Rosc]: Rosc / OHM}, units={Rosc: OHM}, law=NO_LAW, empirical=True,
@@ -104,6 +139,13 @@ def eq5() -> Equation:
 
 
 def eq6() -> Equation:
+    """Eq 6: R_OSC for a switching frequency, 1e9 / f - 4000 ohms.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq6``: R_OSC (ohm) against f_SW (Hz), empirical.
+    """
     return Equation(
         id="lm4651-eq6", source=f"{NAME}, eq (6)", title="R_OSC for a frequency", lhs=Rosc, lhs_unit=OHM, lhs_scale=OHM,
         printed=10 ** 9 / n[f] - 4000, scales={n[f]: f / HZ}, units={f: HZ}, law=NO_LAW, empirical=True,
@@ -114,6 +156,13 @@ def eq6() -> Equation:
 
 
 def eq7() -> Equation:
+    """Eq 7: the error amplifier's pole, 1 / (2 pi R_f C_f).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq7``: the pole (Hz) against R_f (ohm) and C_f (F).
+    """
     return Equation(
         id="lm4651-eq7", source=f"{NAME}, eq (7)", title="Error-amplifier pole", lhs=f, lhs_unit=HZ,
         printed=1 / (2 * sp.pi * Rf * Cf), derived=_corner(Rf, Cf), units={Rf: OHM, Cf: F},
@@ -121,6 +170,13 @@ def eq7() -> Equation:
 
 
 def eq8() -> Equation:
+    """Eq 8: the capacitance of two planes, with eps0 printed as 0.22479 pF/in.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq8``: C (F) against epsilon_r, the area (in^2) and the spacing (in).
+    """
     return Equation(
         id="lm4651-eq8", source=f"{NAME}, eq (8)", title="Plane capacitance, eps0 = 0.22479 pF/in", lhs=C,
         lhs_unit=F, printed=sp.Rational("0.22479") * F / 10 ** 12 / u.inch * epsr * Ar / d,
@@ -135,6 +191,13 @@ def _pd_system(x, p_out, f_sw):
 
 
 def eq9() -> Equation:
+    """Eq 9: the switching loss fraction, (t_r + t_f + T_OVERMOD) f_SW.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq9``: the loss fraction against t_r, t_f, T_OVERMOD (s) and f_SW (Hz), empirical.
+    """
     return Equation(
         id="lm4651-eq9", source=f"{NAME}, eq (9)", title="Switching loss fraction", lhs=x, lhs_unit=sp.Integer(1),
         printed=(tr + tf + tom) * f, units={tr: S, tf: S, tom: S, f: HZ}, empirical=True,
@@ -155,6 +218,13 @@ def eq9() -> Equation:
 
 
 def eq10() -> Equation:
+    """Eq 10: the switching dissipation, x P_out / (1 - x).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq10``: the switching dissipation (W) against x and P_out (W).
+    """
     return Equation(
         id="lm4651-eq10", source=f"{NAME}, eq (10)", title="Switching dissipation", lhs=P, lhs_unit=W,
         printed=x * Pout / (1 - x), derived=sp.solve(sp.Eq(P, x * (Pout + P)), P)[0], units={Pout: W},
@@ -162,6 +232,13 @@ def eq10() -> Equation:
 
 
 def conduction() -> Equation:
+    """The conduction dissipation, I_rms^2 x 2 R_DS(on) (Power Dissipation).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-conduction``: the dissipation (W) against P_out (W), R_L and R_DS(on) (ohm).
+    """
     return Equation(
         id="lm4651-conduction", source=f"{NAME}, Power Dissipation", title="Conduction dissipation", lhs=P,
         lhs_unit=W, printed=(sp.sqrt(Pout / RL)) ** 2 * (2 * Rds), derived=2 * Rds * Pout / RL,
@@ -169,6 +246,13 @@ def conduction() -> Equation:
 
 
 def eq11() -> Equation:
+    """Eq 11: the heat sink's thermal resistance from the junction's temperature budget.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq11``: theta_SA (K/W) against the temperatures (K), P_D (W) and theta_JC, theta_CS (K/W).
+    """
     return Equation(
         id="lm4651-eq11", source=f"{NAME}, eq (11)", title="Heat sink thermal resistance", lhs=tsa, lhs_unit=K / W,
         printed=(Tj - Ta) / Pd - tjc - tcs, derived=sp.solve(sp.Eq(Tj - Ta, Pd * (tjc + tcs + tsa)), tsa)[0],
@@ -176,6 +260,13 @@ def eq11() -> Equation:
 
 
 def eq12() -> Equation:
+    """Eq 12 (reconstructed): the closed-loop gain.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-eq12``: the gain, a pure number, against R1, R2, R_f11 and R_f12 (ohm).
+    """
     return Equation(
         id="lm4651-eq12", source=f"{NAME}, eq (12) (reconstructed)", title="Closed-loop gain", lhs=sp.Symbol("G"),
         lhs_unit=sp.Integer(1), printed=(R2 / R1) * ((Rf11 + Rf12) / Rf12) - R2 / R1 + sp.Rational(1, 2),
@@ -186,6 +277,13 @@ def eq12() -> Equation:
 
 
 def fb_pole1() -> Equation:
+    """The feedback filter's first pole, 1 / (2 pi R_f12 C_fl1) (components table).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-fb-pole1``: the pole (Hz) against R_f12 (ohm) and C_fl1 (F).
+    """
     return Equation(
         id="lm4651-fb-pole1", source=f"{NAME}, components table, R_fl2", title="Feedback filter, first pole",
         lhs=f, lhs_unit=HZ, printed=1 / (2 * sp.pi * Rf12 * Cfl1), derived=_corner(Rf12, Cfl1),
@@ -194,6 +292,13 @@ def fb_pole1() -> Equation:
 
 
 def fb_pole2() -> Equation:
+    """The feedback filter's second pole, 1 / (2 pi R_fl3 C_fl2) (components table).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-fb-pole2``: the pole (Hz) against R_fl3 (ohm) and C_fl2 (F).
+    """
     return Equation(
         id="lm4651-fb-pole2", source=f"{NAME}, components table, R_fl3", title="Feedback filter, second pole",
         lhs=f, lhs_unit=HZ, printed=1 / (2 * sp.pi * Rfl3 * Cfl2), derived=_corner(Rfl3, Cfl2),
@@ -202,6 +307,13 @@ def fb_pole2() -> Equation:
 
 
 def input_hp() -> Equation:
+    """The input high-pass corner of C_IN with R1 (implied by the Example Design).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-input-hp``: the corner (Hz) against R1 (ohm) and C_IN (F).
+    """
     return Equation(
         id="lm4651-input-hp", source=f"{NAME}, Example Design (implied; no formula printed)",
         title="Input high-pass (C_IN with R1)", lhs=f, lhs_unit=HZ, printed=1 / (2 * sp.pi * R1 * Cin),
@@ -211,6 +323,13 @@ def input_hp() -> Equation:
 
 
 def output_filter() -> Equation:
+    """The bridge output filter's corner, 1 / (2 pi sqrt(2 L1 C_BYP)) (reconstructed).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-filter``: the corner (Hz) against L1 (H) and C_BYP (F).
+    """
     return Equation(
         id="lm4651-filter", source=f"{NAME}, Output Stage Filtering (reconstructed)", title="Bridge output filter",
         lhs=f, lhs_unit=HZ, printed=1 / (2 * sp.pi * sp.sqrt(L1 * 2 * Cb)),
@@ -221,5 +340,12 @@ def output_filter() -> Equation:
 
 
 def build() -> list[Equation]:
+    """Every LM4651/LM4652 equation record.
+
+    Returns
+    -------
+    list of Equation
+        Equations 1 to 12 and those the text implies, in the datasheet's order.
+    """
     return [eq1(), eq2(), eq3(), eq4(), eq5(), eq6(), eq7(), eq8(), eq9(), eq10(), conduction(), eq11(), eq12(),
             fb_pole1(), fb_pole2(), input_hp(), output_filter()]

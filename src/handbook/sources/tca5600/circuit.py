@@ -10,7 +10,19 @@ from ...core import InputError
 
 
 def coil_voltages(p: dict) -> tuple[float, float]:
-    """Eq 1 and 2 (KVL): (V_L+ while dumping, V_L- while charging)."""
+    """Eq 1 and 2 (KVL): (V_L+ while dumping, V_L- while charging).
+
+    Parameters
+    ----------
+    p : Mapping
+        The TCA5600 parameters (names as in :mod:`.data`, SI units); reads ``v_out2``, ``regulator_drop``,
+        ``v_f``, ``v_cc2_min``, ``vce_sat`` and ``v12h``, V.
+
+    Returns
+    -------
+    tuple of float
+        (V_L+, V_L-), V. Raises :class:`~handbook.core.InputError` where either is not positive.
+    """
     vl_plus = p["v_out2"] + p["regulator_drop"] + p["v_f"] - p["v_cc2_min"]
     vl_minus = p["v_cc2_min"] - p["vce_sat"] - p["v12h"]
     if vl_plus <= 0 or vl_minus <= 0:
@@ -20,7 +32,20 @@ def coil_voltages(p: dict) -> tuple[float, float]:
 
 
 def design(p: dict) -> dict:
-    """Eq 3 to 6a at the worst operating point: alpha, t1, I_peak, L1 and R1."""
+    """Eq 3 to 6a at the worst operating point: alpha, t1, I_peak, L1 and R1.
+
+    Parameters
+    ----------
+    p : Mapping
+        The TCA5600 parameters (names as in :mod:`.data`, SI units): what :func:`coil_voltages` reads,
+        ``f_min`` (Hz) and ``i_out2`` (A).
+
+    Returns
+    -------
+    dict
+        ``vl_plus``, ``vl_minus`` (V), ``alpha`` (t1 / t2, a pure number), ``t1``, ``t2`` (s), ``i_peak`` (A),
+        ``l1`` (H) and ``r1`` (ohm).
+    """
     vl_plus, vl_minus = coil_voltages(p)
     alpha = vl_plus / vl_minus
     t1 = 1 / ((1 + 1 / alpha) * p["f_min"])
@@ -31,7 +56,23 @@ def design(p: dict) -> dict:
 
 def operating_point(l1: float, r1: float, p: dict) -> dict:
     """What given L1 and R1 do at the operating point: the peak current is set by R1, the free-running
-    frequency by L1, and the load they can carry by the triangle's average."""
+    frequency by L1, and the load they can carry by the triangle's average.
+
+    Parameters
+    ----------
+    l1 : float
+        Coil inductance L1, H.
+    r1 : float
+        Current-sense resistor R1, ohm.
+    p : Mapping
+        The TCA5600 parameters (names as in :mod:`.data`, SI units): what :func:`coil_voltages` reads.
+
+    Returns
+    -------
+    dict
+        ``i_peak`` (A), ``t1`` (s), ``f`` (the free-running frequency, Hz) and ``i_out_max`` (the
+        largest load current, A).
+    """
     vl_plus, vl_minus = coil_voltages(p)
     alpha = vl_plus / vl_minus
     i_peak = p["v12h"] / r1

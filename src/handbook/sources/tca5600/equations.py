@@ -9,7 +9,13 @@ from .data import NAME
 
 
 def build() -> list[Equation]:
-    """The seven equations share their symbols: one short literal table (data)."""
+    """The seven equations share their symbols: one short literal table (data).
+
+    Returns
+    -------
+    list of Equation
+        Eq 1 to 6a: V_L+, V_L- (V), alpha, t1 (s), I_peak (A), L1 (H) and R1 (ohm), in the excerpt's order.
+    """
     V, A, S, H, HZ, OHM = u.volt, u.ampere, u.second, u.henry, u.hertz, u.ohm
     Vo, Vreg, VF, Vcc, Vce, V12, VLp, VLm, a, t1, t2, f, Io, Ip, L, R1 = sp.symbols(
         r"V_{out2} V_{(9-8)} V_F V_{CC2} V_{CE(sat)} V_{12(H)} V_{L+} V_{L-} \alpha t_1 t_2 f I_{out2} I_{L(peak)} L_1 R_1",

@@ -18,6 +18,13 @@ def _capcdm(p):
 
 
 def build() -> list[Claim]:
+    """Every TDA5341 claim (start, CAPCDM) and the TDA5144 datasheet's version of the timer.
+
+    Returns
+    -------
+    list of Claim
+        The claims, in the excerpt's order.
+    """
     return [
         Claim(id="tda5341-fosc", where=f"{NAME} start", quantity="rotor oscillation frequency",
               printed=Printed("22.7", "Hz"), chapter=START,

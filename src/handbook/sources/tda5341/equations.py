@@ -12,6 +12,13 @@ nF = u.farad / 10 ** 9
 
 
 def capcdm() -> Equation:
+    """The CAPCDM capacitor, 7092 / f_C1 nF (rebuilt from the OCR's pieces).
+
+    Returns
+    -------
+    Equation
+        The record ``tda5341-capcdm``: CAPCDM (printed in nF) against f_C1 (Hz).
+    """
     f_num = sp.Symbol("f", positive=True)
     return Equation(
         id="tda5341-capcdm", source=f"{NAME}, CAPCDM (reconstructed)", title="CAPCDM = 7092 / f_C1 (C in nF)",
@@ -25,6 +32,13 @@ def capcdm() -> Equation:
 
 
 def max_delay() -> Equation:
+    """The longest commutation delay, 0.070 ms per nF of CAPCDM.
+
+    Returns
+    -------
+    Equation
+        The record ``tda5341-max-delay``: t_max (printed in ms) against C (printed in nF).
+    """
     c_nf = sp.Symbol("C_nF")
     return Equation(
         id="tda5341-max-delay", source=f"{NAME}, CAPCDM", title="Maximum delay = 0.070 C ms (C in nF)",
@@ -36,4 +50,11 @@ def max_delay() -> Equation:
 
 
 def build() -> list[Equation]:
+    """Every TDA5341 equation record.
+
+    Returns
+    -------
+    list of Equation
+        The CAPCDM and maximum-delay records.
+    """
     return [capcdm(), max_delay()]

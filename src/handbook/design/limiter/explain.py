@@ -6,30 +6,17 @@ reaches, from the relaxation); a pinned resistor (the design repeated without ea
 """
 from __future__ import annotations
 
-import itertools
-
 import numpy as np
 
-from . import limiter_network as net
-from .solvers import Infeasible
-
-TABLE = "current_limiter"
-
-
-def best_headroom(s: dict) -> float:
-    """The largest least headroom any network of the ranges (or pins) allows: both inputs, worst corner."""
-    from .current_limiter import choices
-    ends = [(v[0], v[-1]) for v in (choices(s, n) for n in net.DIVIDER)]
-    best_plus = max(min(net.headroom_corners((1, 1, 1, r12, r13), s)[:4]) for r12, r13 in itertools.product(*ends[3:]))
-    best_minus = max(min(net.headroom_corners((r9, r10, r11, 1, 1), s)[4:])
-                     for r9, r10, r11 in itertools.product(*ends[:3]))
-    return float(min(best_plus, best_minus))
+from ..solvers import Infeasible
+from . import model as net
+from .model import TABLE, best_headroom, choices
+from .search import Relaxation
 
 
 def best_margin(s: dict) -> float | None:
     """The largest worst margin of any continuous network within the ranges (IPOPT on the relaxation)."""
-    from .current_limiter import RESISTORS, Relaxation, choices
-    lists = [choices(s, n) for n in RESISTORS]
+    lists = [choices(s, n) for n in net.RESISTORS]
     lb, ub = np.array([v[0] for v in lists]), np.array([v[-1] for v in lists])
     res = Relaxation(s).solve(lb, ub, [*np.log(np.sqrt(lb * ub)), 0.0], 0.0)
     return None if res is None else float(res[0][6])
@@ -37,7 +24,6 @@ def best_margin(s: dict) -> float | None:
 
 def least_divider_current(s: dict) -> float:
     """The least current any network of the ranges (or pins) draws from the zener node (largest values)."""
-    from .current_limiter import choices
     return float(net.divider_current(tuple(choices(s, n)[-1] for n in net.DIVIDER), s))
 
 
@@ -69,8 +55,8 @@ def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
             f"range or use finer series", {"r7_relaxed": r7_relaxed})
 
 
-def explain(s: dict, r7_relaxed: float | None):
-    """Raise the Infeasible that says why, and what would be met. A pinned resistor is blamed when freeing
+def explain(s: dict, r7_relaxed: float | None) -> Infeasible:
+    """The Infeasible that says why, and what would be met. A pinned resistor is blamed when freeing
     it alone lifts the cause (the headroom's exact best, or the relaxation's best margin, reaches the spec)."""
     message, achievable = _reason(s, r7_relaxed)
     for name in (n for n in ("r7",) + net.DIVIDER if s[n] is not None):
@@ -83,7 +69,7 @@ def explain(s: dict, r7_relaxed: float | None):
             margin = best_margin(free)
             lifted = margin is not None and margin >= s["min_margin"]
         if lifted:
-            raise Infeasible(TABLE, f"{name} = {s[name]:g} ohm (pinned) makes the spec infeasible: {message}. Left "
+            return Infeasible(TABLE, f"{name} = {s[name]:g} ohm (pinned) makes the spec infeasible: {message}. Left "
                              f"free, a network of the {s[name + '_series']} range {s[name + '_min']:g} .. "
                              f"{s[name + '_max']:g} ohm can meet it", {**achievable, "pinned": name})
-    raise Infeasible(TABLE, message, achievable)
+    return Infeasible(TABLE, message, achievable)

@@ -4,7 +4,7 @@ heat sink, chosen together.
 Problem. Choose R_OSC (``r_osc_series``), L (``l_series``) and C_BYP (``c_series``) to maximise the
 efficiency at p_out (``objective = "efficiency"``) or the heat sink's allowed theta_SA (``"heat_sink"``),
 subject at the worst of eight tolerance corners (oscillator slow/fast from eq 5 against the datasheet
-table, L and C each +-tolerance; :mod:`~handbook.design.class_d_model`) to: THD+N at ``thd_test_power`` as
+table, L and C each +-tolerance; :mod:`~handbook.design.class_d.model`) to: THD+N at ``thd_test_power`` as
 the analyser reads it (the switching residue added when an oscillator corner lies inside its
 ``thd_bandwidth``); no clipping at p_out (nor at the test point); the switching residue at the load; the
 loaded filter flat across the audio band over the whole L, C tolerance box (exact, not only its corners)
@@ -32,13 +32,13 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from ..core import series
-from ..sources.lm4651 import circuit as lm4651
-from . import class_d_model as model
-from .class_d_model import best, grid
-from .class_d_report import binding_text, infeasible, warnings
-from .common import Result, completed
-from .solvers import IPOPT_OPTIONS, Infeasible, Solution
+from ...core import series
+from ...sources.lm4651 import circuit as lm4651
+from ..common import Result, completed, reported
+from ..solvers import IPOPT_OPTIONS, Infeasible, Solution
+from . import model
+from .explain import binding_text, infeasible, warnings
+from .model import best, grid
 
 TABLE = "class_d"
 DEV = lm4651.DEVICE
@@ -51,22 +51,22 @@ F_S, L_S, C_S = 1e5, 1e-4, 1e-5
 
 @dataclass(frozen=True)
 class ClassDResult(Result):
-    f_sw: float
-    f_sw_min: float
-    f_sw_max: float
-    r_osc: float
-    r_dly: float
-    l_out: float
-    c_out: float
-    efficiency: float
-    p_dissipation: float
-    theta_sa_required: float
-    t_junction: float
-    t_junction_no_sink: float
-    thd_n: float
-    p_clip: float
-    binding: str
-    warnings: list
+    f_sw: float = reported('Hz', 'switching frequency (eq 5, nominal)')
+    f_sw_min: float = reported('Hz', 'slowest oscillator corner')
+    f_sw_max: float = reported('Hz', 'fastest oscillator corner')
+    r_osc: float = reported('ohm', 'R_OSC')
+    r_dly: float = reported('ohm', 'R_DLY')
+    l_out: float = reported('H', 'filter inductors L')
+    c_out: float = reported('F', 'C_BYP')
+    efficiency: float = reported('%', 'efficiency at p_out')
+    p_dissipation: float = reported('W', 'LM4652 dissipation (corner setting the heat sink)')
+    theta_sa_required: float = reported('K/W', 'heat sink needed')
+    t_junction: float = reported('C', 'T_j with the heat sink (the one needed: 150 C - tj_margin by construction)')
+    t_junction_no_sink: float = reported('C', 'T_j with no heat sink, theta_JA alone (above 150 C it shuts down)')
+    thd_n: float = reported('%', "THD+N at the test point (in the analyser's band)")
+    p_clip: float = reported('W', 'clipping power')
+    binding: str = reported('', 'binding')
+    warnings: list = reported('', 'warnings')
     figures: dict
     continuous: tuple  # IPOPT's (f_sw, L, C) before the snap
     band: tuple  # the f_sw corners (slow, fast)
@@ -105,7 +105,7 @@ def _params(s: dict) -> list[float]:
 
 
 def _theta_needed(f, P):
-    """theta_SA needed at oscillator frequency f (symbolic twin of class_d_model.heat)."""
+    """theta_SA needed at oscillator frequency f (symbolic twin of model.heat)."""
     pc = P["w_cont"] * P["p_cont"] + (1 - P["w_cont"]) * lm4651.p_clip(f, P["r_load"], P["supply"])
     watts = (lm4651.p_switch(f, pc, t_overmod=P["t_om"]) + lm4651.p_idle_4652(P["supply"])
              + 2 * pc / P["r_load"] * P["rds25"] * (1 + lm4651.RDS_TC * (P["t_target"] - 25.0)))
@@ -113,7 +113,7 @@ def _theta_needed(f, P):
 
 
 def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, float, float]]:
-    """Every constraint at every corner, scaled to order one (the symbolic twin of class_d_model.figures).
+    """Every constraint at every corner, scaled to order one (the symbolic twin of model.figures).
 
     THD+N jumps where an oscillator corner crosses the analyser's band, so the NLP is solved on each side
     of it, both smooth: ``above`` holds the slowest corner above the band (distortion alone), else the
@@ -136,7 +136,7 @@ def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, flo
                 ("filter Q", lm4651.filter_q(lc, cc, rl) / P["q_max"], -ca.inf, 1.0),
                 ("inductor peak", lm4651.inductor_peak(fc, lc, cc, lm4651.v_clip_peak(fc, rl, vs), rl, vs,
                                                        P["f_audio"]) / P["i_max"], -ca.inf, 1.0)]
-    c_hi = c_out * (1 + P["tol_c"])  # the box's worst in-band peaking (class_d_model.band_deviation_box_db)
+    c_hi = c_out * (1 + P["tol_c"])  # the box's worst in-band peaking (model.band_deviation_box_db)
     l_star = ca.fmin(ca.fmax(lm4651.filter_worst_peak_l(P["f_audio"], c_hi, rl), l_out * (1 - P["tol_l"])),
                      l_out * (1 + P["tol_l"]))
     out.append(("audio band", lm4651.filter_gain2(P["f_audio"], l_star, c_hi, rl) / P["g_band"], -ca.inf, 1.0))

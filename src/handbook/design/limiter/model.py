@@ -32,6 +32,10 @@ from __future__ import annotations
 import itertools
 
 import casadi as ca
+import numpy as np
+
+from ...core import InputError, series
+from ..common import completed, ordered
 
 #: the divider resistors, in the order of every tuple here
 DIVIDER = ("r9", "r10", "r11", "r12", "r13")
@@ -39,6 +43,9 @@ DIVIDER = ("r9", "r10", "r11", "r12", "r13")
 #: parts' tolerances are S (1 +- t) (both at the same end); so the resistor corners are those of
 #: (S, R11, R12, R13): 2^4, not 2^5 (the oracle in the tests still enumerates all of them)
 CORNERS = tuple(itertools.product((-1, 1), repeat=4))
+TABLE = "current_limiter"
+#: every resistor the design chooses, R7 first
+RESISTORS = ("r7",) + DIVIDER
 
 
 def zener_range(s: dict) -> tuple[float, float]:
@@ -164,3 +171,47 @@ def corner_proof() -> dict:
             if e.has(q):
                 out[(name, str(q))] = (sp.degree(num, q), sp.degree(den, q), positive)
     return out
+
+
+def checked(spec: dict | None) -> dict:
+    s = completed(TABLE, spec)
+    ordered(TABLE, "i_no_trip", "i_must_trip", s, "A")
+    for name in RESISTORS:
+        ordered(TABLE, f"{name}_min", f"{name}_max", s, "ohm", strict=False)
+    for name in RESISTORS:  # a range holding no series value is bad input, found before any solver
+        choices(s, name)
+    if s["i_no_trip"] * (1 + s["min_margin"]) >= s["i_must_trip"] * (1 - s["min_margin"]):
+        raise InputError(f"{TABLE}.min_margin = {s['min_margin']:g} leaves no room between i_no_trip = "
+                         f"{s['i_no_trip']:g} A and i_must_trip = {s['i_must_trip']:g} A: use a smaller margin")
+    return s
+
+
+def choices(s: dict, name: str) -> np.ndarray:
+    """The values a resistor may take: its pinned value, or its series within its range."""
+    if s[name] is not None:
+        return np.array([float(s[name])])
+    values = series.values(s[f"{name}_series"], s[f"{name}_min"], s[f"{name}_max"])
+    if not values:
+        name_series = s[f"{name}_series"]
+        below, above = series.at_most(name_series, s[f"{name}_min"]), series.at_least(name_series, s[f"{name}_max"])
+        raise InputError(f"{TABLE}.{name}_min = {s[name + '_min']:g} ohm .. {TABLE}.{name}_max = {s[name + '_max']:g} ohm "
+                         f"holds no {s[name + '_series']} value: widen it to include {below:g} or {above:g} ohm")
+    return np.array(values)
+
+
+def scores(r7: float, r: np.ndarray, s: dict) -> np.ndarray:
+    """Exact worst margin of each network (rows of R9..R13) with this R7; -inf where a headroom fails."""
+    v = verify(r7, tuple(r.T), s)
+    worst = np.minimum(v["margin_low"], v["margin_high"])
+    ok = ((v["headroom_min"] >= s["input_headroom"] - 1e-12) & (v["i_trip_min"] > 0)
+          & (v["divider_current"] <= s["divider_current_max"] * (1 + 1e-12)))
+    return np.where(ok, worst, -np.inf)
+
+
+def best_headroom(s: dict) -> float:
+    """The largest least headroom any network of the ranges (or pins) allows: both inputs, worst corner."""
+    ends = [(v[0], v[-1]) for v in (choices(s, n) for n in DIVIDER)]
+    best_plus = max(min(headroom_corners((1, 1, 1, r12, r13), s)[:4]) for r12, r13 in itertools.product(*ends[3:]))
+    best_minus = max(min(headroom_corners((r9, r10, r11, 1, 1), s)[4:])
+                     for r9, r10, r11 in itertools.product(*ends[:3]))
+    return float(min(best_plus, best_minus))

@@ -10,20 +10,19 @@ the tolerance box, and the smallest capacitor meeting the window has the exact c
 
 snapped to the series and re-checked at all 16 corners (:func:`verify`). The choice is one-dimensional
 and monotonic: no optimiser is needed and none is used. The smallest C also gives the largest swing at
-``rpm_max``, so it maximises the noise margin. CAP-ST and CAP-TI: :mod:`.commutation_timers`; the
-device sanity warnings: :mod:`.commutation_checks`.
+``rpm_max``, so it maximises the noise margin. CAP-ST and CAP-TI: :mod:`.timers`; the
+device sanity warnings: :mod:`.checks`.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
-from ..core import InputError, series
-from ..sources.an94002 import circuit as an94002
-from . import commutation_checks as checks
-from . import commutation_timers as timers
-from .common import Result, completed, ordered
-from .solvers import Infeasible
+from ...core import InputError, series
+from ...sources.an94002 import circuit as an94002
+from ..common import Result, completed, ordered, reported
+from ..solvers import Infeasible
+from . import checks, timers
 
 TABLE = "commutation"
 
@@ -35,23 +34,23 @@ BINDING = {
 
 @dataclass(frozen=True)
 class CommutationResult(Result):
-    cap_cd: float
-    cap_dc: float
-    rpm_min_reliable: float
-    rpm_max_reliable: float
-    binding: str
+    cap_cd: float = reported('F', 'CAP-CD')
+    cap_dc: float = reported('F', 'CAP-DC')
+    rpm_min_reliable: float = reported('rpm', 'lowest reliable speed')
+    rpm_max_reliable: float = reported('rpm', 'highest reliable speed')
+    noise_margin: float = reported('%', 'margin above the noise floor at rpm_max')
+    binding: str = reported('', 'binding')
+    cap_st: float | None = reported('F', 'CAP-ST (motor data given)')
+    cap_ti: float | None = reported('F', 'CAP-TI (flyback_time given)')
+    warnings: tuple = reported('', 'warnings')
     continuous_optimum: float  # the closed-form bound (F)
-    noise_margin: float
     swing_at_rpm_min: float
     swing_at_rpm_max: float
     window_corner: dict  # the corner at which the window binds
     next_smaller: float
     next_smaller_fails: str
-    cap_st: float | None
-    cap_ti: float | None
     start: timers.StartResult | None
     watchdog: timers.WatchdogResult | None
-    warnings: tuple
 
     table = TABLE
 

@@ -3,8 +3,8 @@
 PyOpenMagnetics (PyPI, MIT, version pinned in requirements.txt) ships the OpenMagnetics database of core
 shapes, materials and wires in its wheel. Its adviser takes tens of seconds per design, so the few
 figures the coil design needs are read from that database once, for a narrowed candidate set, and
-shipped as ``converter_cores.json`` beside this module: :func:`load` reads it (no PyOpenMagnetics at design
-time), :func:`build` rebuilds it (``python -m handbook.design.converter_cores`` writes it), and
+shipped as ``cores.json`` beside this module: :func:`load` reads it (no PyOpenMagnetics at design
+time), :func:`build` rebuilds it (``python -m handbook.design.converter.cores`` writes it), and
 ``tests/design/test_converter.py`` rebuilds a sample of rows from PyOpenMagnetics to prove the file current.
 
 Candidates: gapped two-piece ferrite sets of the families a small board coil uses (pot cores P, RM, EP,
@@ -31,7 +31,7 @@ from importlib import resources
 from pathlib import Path
 
 #: the shipped table's name inside the package (pyproject's package-data ships it in the wheel)
-RESOURCE = "converter_cores.json"
+RESOURCE = "cores.json"
 #: the file in a source tree (what :func:`write` rewrites)
 PATH = Path(__file__).with_name(RESOURCE)
 #: the centre gaps tabulated (m): 10 um (twice the 5 um residual gap) to 5 mm, 61 points evenly in log, each

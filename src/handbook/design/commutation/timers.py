@@ -18,9 +18,9 @@ import itertools
 import math
 from dataclasses import dataclass
 
-from ..core import InputError, series
-from ..sources.an94002 import circuit as an94002
-from .solvers import Infeasible
+from ...core import InputError, series
+from ...sources.an94002 import circuit as an94002
+from ..solvers import Infeasible
 
 TABLE = "commutation"
 #: CAP-TI watchdog ramp 0.3 V -> 2.2 V (AN94002 2.1.3; TDA5144 datasheet)

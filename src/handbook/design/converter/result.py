@@ -19,7 +19,7 @@ switching frequency is reported over VCC2 = ``v_supply_min`` .. ``v_supply_max``
 where V_L- = V_L+ and falls towards both ends: at the highest VCC2 it can fall into the audio band).
 
 Coil. For every candidate core (shape and material from PyOpenMagnetics' database, shipped as
-:mod:`.converter_cores`): the reluctance is the core's l_e / (mu0 mu_i A_e) in series with PyOpenMagnetics'
+:mod:`.cores`): the reluctance is the core's l_e / (mu0 mu_i A_e) in series with PyOpenMagnetics'
 own gap model (Zhang's reluctance of the ground centre gap, with fringing, and the outer legs' residual gaps),
 tabulated over the gap's length; the gap for the nominal inductance is read from that table. Fringing makes
 the centre gap's reluctance smaller than lg / (mu0 A_centre), so a gap worked out without it over the centre
@@ -44,13 +44,14 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..core import InputError
-from ..core import series as eseries
-from ..sources.tca5600 import circuit as tca5600
-from ..sources.tca5600 import data as tca5600_data
-from . import converter_cores
-from .common import Result, completed, ordered
-from .converter_coil import (  # noqa: F401 (the coil's names are this module's too)
+from ...core import InputError
+from ...core import series as eseries
+from ...sources.tca5600 import circuit as tca5600
+from ...sources.tca5600 import data as tca5600_data
+from ..common import Result, completed, ordered, reported
+from ..solvers import Infeasible
+from . import cores
+from .coil import (  # noqa: F401 (the coil's names are this module's too)
     ALPHA_CU,
     GAP_MIN,
     MU0,
@@ -74,7 +75,6 @@ from .converter_coil import (  # noqa: F401 (the coil's names are this module's 
     v_top,
     wind,
 )
-from .solvers import Infeasible
 
 TABLE = "converter"
 #: the upper end of the audio band (Hz): the excerpt's own example of a frequency above it
@@ -93,39 +93,39 @@ I_OUT_FLOOR = 1e-6
 
 @dataclass(frozen=True)
 class ConverterResult(Result):
-    alpha: float
-    t1: float
-    t2: float
-    i_peak: float
-    l1: float
-    r1: float
-    r1_part: float
+    alpha: float = reported('1', 'time ratio alpha = t1/t2 (eq 3)')
+    t1: float = reported('s', 'charging time t1 (eq 4)')
+    t2: float = reported('s', 'dumping time t2')
+    i_peak: float = reported('A', 'peak coil current (eq 5)')
+    l1: float = reported('H', 'coil inductance L1 (eq 6)')
+    r1: float = reported('ohm', 'current-sense resistor R1 (eq 6a)')
+    r1_part: float = reported('ohm', 'R1 fitted (series value, R1/(1 + r1_tolerance) or below)')
+    i_peak_max: float = reported('A', 'highest peak coil current (R1 at its low end)')
+    l1_nominal: float = reported('H', 'inductance wound, nominal (f_min at +a_l_tolerance)')
+    f_sw_min: float = reported('Hz', 'lowest full-load frequency, supply range and corners')
+    f_sw_max: float = reported('Hz', 'highest full-load frequency, supply range and corners')
+    core_shape: str = reported('', 'core shape')
+    core_material: str = reported('', 'core material')
+    turns: int = reported('', 'turns')
+    gap: float = reported('m', "centre-column gap (PyOpenMagnetics' gap model)")
+    a_l: float = reported('H', 'A_L (inductance per turn squared, nominal)')
+    wire: str = reported('', 'wire')
+    b_peak: float = reported('T', 'peak flux density, centre column (highest peak current)')
+    b_peak_min_area: float = reported('T', 'peak flux density, narrowest section (the one saturation is judged at)')
+    core_loss: float = reported('W', 'core loss (iGSE)')
+    winding_loss: float = reported('W', 'winding loss (I_rms^2 R_dc, copper at its hottest)')
+    temperature_rise: float = reported('K', 'temperature rise')
+    saturation_margin: float = reported('%', 'saturation margin (narrowest section, hot, highest I_peak)')
+    binding: str = reported('', 'binding')
+    warnings: tuple = reported('', 'warnings')
     i_peak_min: float
-    i_peak_max: float
-    l1_nominal: float
     l1_max: float
-    f_sw_min: float
-    f_sw_max: float
     vl_plus: float
     vl_minus: float
     i_rms: float
-    core_shape: str
-    core_material: str
-    turns: int
-    gap: float
-    a_l: float
-    wire: str
-    b_peak: float
-    b_peak_min_area: float
-    core_loss: float
-    winding_loss: float
-    temperature_rise: float
-    saturation_margin: float
-    binding: str
     coil: Coil
     candidates: tuple  # every candidate Coil, in the order of the choice (smallest first)
     next_smaller: Coil | None  # the largest candidate smaller than the choice, and why it fails
-    warnings: tuple
 
     table = TABLE
 
@@ -179,7 +179,7 @@ def choose(s: dict) -> tuple[dict, list[Coil], Coil | None]:
 
 def _feasible(s: dict) -> bool:
     op = operating_point(s)
-    table = converter_cores.load()
+    table = cores.load()
     return any(coil(sh, m, s, op, table).ok for sh in table["shapes"] for m in table["materials"])
 
 
@@ -205,7 +205,7 @@ def _current_that_works(s: dict) -> float | None:
 def _frequency_that_works(s: dict) -> float | None:
     """The lowest f_min above the spec's, up to the schema's highest, that some candidate meets: an upward
     scan (doubling) for a feasible point, then bisection down to the last infeasible one."""
-    from .schema import TABLES
+    from ..schema import TABLES
 
     f_high = next(p.high for p in TABLES[TABLE] if p.name == "f_min")
     pred = lambda f: _feasible({**s, "f_min": f})  # noqa: E731
@@ -226,7 +226,7 @@ def _to_figures(x: float, rounding, figures: int = 4) -> float:
 def infeasible(s: dict, every: list[Coil]) -> Infeasible:
     """Nothing in the candidate set meets the spec: what would (a lower current, a higher frequency),
     and which candidate comes nearest (the way to a larger core family)."""
-    from ..report.tables import eng
+    from ...core.units import eng
 
     i_ok = _current_that_works(s)
     f_ok = _frequency_that_works(s)
@@ -269,9 +269,9 @@ def audio_band(s: dict, op: dict) -> tuple[float, float] | None:
 
 
 def warnings(s: dict, op: dict, c: Coil) -> list[str]:
-    from ..report.tables import eng
+    from ...core.units import eng
 
-    table = converter_cores.load()
+    table = cores.load()
     out = []
     if s["v_supply_max"] >= v_top(s):
         out.append(f"at VCC2 = {eng(v_top(s), 'V')} and above (v_supply_max = {eng(s['v_supply_max'], 'V')}) V_L+ "

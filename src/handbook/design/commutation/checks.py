@@ -2,7 +2,7 @@
 intended still designs, and says why in ``warnings`` (each naming the limit and where it is read)."""
 from __future__ import annotations
 
-from ..sources.an94002 import circuit as an94002
+from ...sources.an94002 import circuit as an94002
 
 #: CAP-TI internal-timing charge (0.2 V -> 0.3 V) and discharge currents, typical (TDA5144 datasheet;
 #: AN94002 2.1.3: 57 uA and 28 uA)

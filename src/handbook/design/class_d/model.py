@@ -14,8 +14,8 @@ import itertools
 
 import numpy as np
 
-from ..core import series
-from ..sources.lm4651 import circuit as lm4651
+from ...core import series
+from ...sources.lm4651 import circuit as lm4651
 
 DEV = lm4651.DEVICE
 #: the search ranges of the series parts (H, F, ohm)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from . import converter_cores
+from . import cores
 
 MU0 = 4e-7 * math.pi
 #: the smallest centre gap designed (PyOpenMagnetics' gap model): assumption, a ground gap holds about
@@ -17,7 +17,7 @@ T_LOSS = 25.0
 #: copper resistivity at 20 C (ohm m) and its temperature coefficient (1/K)
 RHO_CU, ALPHA_CU = 1.72e-8, 0.00393
 #: the temperature of the shipped wire resistances (C)
-T_WIRE_TABLE = converter_cores.T_HOT
+T_WIRE_TABLE = cores.T_HOT
 #: supply points over which the core loss and the audio band are evaluated
 SUPPLY_POINTS = 41
 
@@ -108,7 +108,7 @@ def b_sat(material: dict, temperature: float) -> float:
     """The material's saturation flux density at ``temperature`` (C): linear through its 25 C and 100 C
     figures (PyOpenMagnetics gives those two), extended beyond them (never below 1 mT: far above the Curie
     temperature the figure means only "saturated")."""
-    t0, t1 = converter_cores.T_ROOM, converter_cores.T_HOT
+    t0, t1 = cores.T_ROOM, cores.T_HOT
     b0, b1 = material["b_sat_room"], material["b_sat_hot"]
     return max(b0 + (b1 - b0) * (temperature - t0) / (t1 - t0), 1e-3)
 
@@ -153,7 +153,7 @@ def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tup
 
 def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | None = None) -> Coil:
     """One candidate core, wound and costed (see the module's description)."""
-    table = table or converter_cores.load()
+    table = table or cores.load()
     shape, material = table["shapes"][shape_name], table["materials"][material_name]
     l_nom, flux_n = op["l1_nominal"], op["l1_max"] * op["i_peak_max"]  # flux_n = N x peak flux
     r_core = core_reluctance(shape, material)
@@ -174,7 +174,7 @@ def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | N
 
 def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: dict | None = None) -> Coil:
     """The candidate wound with ``n`` turns: gap, flux, wire, losses, rise, and the limits it fails."""
-    table = table or converter_cores.load()
+    table = table or cores.load()
     shape, material = table["shapes"][shape_name], table["materials"][material_name]
     r_core = core_reluctance(shape, material)
     t_cu = s["t_ambient"] + s["temperature_rise_max"]  # copper at the hottest the rise allows
@@ -219,6 +219,6 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
 
 def candidates(s: dict, op: dict) -> list[Coil]:
     """Every candidate core wound for this spec, smallest effective volume first (ties: least loss)."""
-    table = converter_cores.load()
+    table = cores.load()
     out = [coil(sh, m, s, op, table) for sh in table["shapes"] for m in table["materials"]]
     return sorted(out, key=lambda c: (c.ve, c.loss if c.ok else math.inf, c.shape, c.material))

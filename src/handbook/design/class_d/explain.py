@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..sources.lm4651 import circuit as lm4651
-from . import class_d_model as model
-from .solvers import Infeasible
+from ...sources.lm4651 import circuit as lm4651
+from ..solvers import Infeasible
+from . import model
 
 TABLE = "class_d"
 DEV = lm4651.DEVICE

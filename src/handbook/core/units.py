@@ -1,0 +1,64 @@
+"""Engineering values for whatever a person reads: ``eng(1.455e-8, "F")`` -> ``"14.55 nF"``.
+
+Free of matplotlib (``design --json`` and the command line format numbers without loading a plotting
+library); it writes exactly what matplotlib's ``EngFormatter(unit, places=None, sep=" ")`` writes, the
+formatter the book's plot axes use, so a value reads the same in a table and on an axis.
+"""
+from __future__ import annotations
+
+import math
+
+#: SI prefixes by power of ten (as matplotlib's EngFormatter.ENG_PREFIXES)
+PREFIXES = {-30: "q", -27: "r", -24: "y", -21: "z", -18: "a", -15: "f", -12: "p", -9: "n", -6: "µ", -3: "m",
+            0: "", 3: "k", 6: "M", 9: "G", 12: "T", 15: "P", 18: "E", 21: "Z", 24: "Y", 27: "R", 30: "Q"}
+
+
+def prefixed(value: float, unit: str) -> str:
+    """``value`` (as given, not rounded) with an SI prefix: ``prefixed(0.0015, "A")`` -> ``"1.5 mA"``; a
+    minus sign is U+2212, as on the book's axes.
+
+    Parameters
+    ----------
+    value : float
+        The value in SI units.
+    unit : str
+        Its unit symbol ("A", "F", "Ω"); ``""`` for none.
+
+    Returns
+    -------
+    str
+        The mantissa (``:g``), a space, the prefix and the unit.
+    """
+    sign, value = (-1.0, -value) if value < 0 else (1.0, abs(float(value)))  # -0.0 shown as 0
+    power = int(math.floor(math.log10(value) / 3) * 3) if value != 0 else 0
+    power = min(max(power, min(PREFIXES)), max(PREFIXES))
+    mantissa = sign * value / 10.0 ** power
+    if abs(float(f"{mantissa:g}")) >= 1000 and power < max(PREFIXES):  # 999.9995 shown as 1 k, not 1000
+        mantissa, power = mantissa / 1000, power + 3
+    suffix = f" {PREFIXES[power]}{unit}" if unit or PREFIXES[power] else ""
+    return f"{mantissa:g}{suffix}".replace("-", "\N{MINUS SIGN}")
+
+
+def eng(value: float, unit: str = "", digits: int = 4) -> str:
+    """An SI value to ``digits`` significant figures with a prefix: ``eng(1.455e-8, "F")`` -> ``"14.55 nF"``.
+
+    Parameters
+    ----------
+    value : float
+        The value in SI units.
+    unit : str
+        Its unit symbol; ``""`` or ``"1"`` for a pure number (no prefix), ``"%"`` for a fraction shown in percent.
+    digits : int
+        Significant figures kept.
+
+    Returns
+    -------
+    str
+        The value as a person reads it.
+    """
+    value = float(f"{float(value):.{digits}g}")
+    if unit in ("1", ""):
+        return f"{value:g}"
+    if unit == "%":
+        return f"{value * 100:g} %"
+    return prefixed(value, unit)

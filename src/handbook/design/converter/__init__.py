@@ -1,0 +1,39 @@
+"""The TCA5600 dc/dc converter by eq 1 to 6a, down to a real coil.
+
+* :mod:`.result`: the operating point (R1 from its series, L1 as a maximum), the result and its warnings;
+* :mod:`.coil`: a coil wound on one core of the database (turns, gap, wire, flux, losses, temperature rise);
+* :mod:`.cores`: the candidate cores, materials and wires, read from PyOpenMagnetics' database.
+"""
+from ..common import explained
+from .coil import frequency, supplies
+from .result import AUDIO_BAND, ConverterResult, checked, choose, design, source_params, sweep
+
+TABLE = "converter"
+#: the tolerances the converter's corners take, each zeroed in turn by :func:`sensitivity`
+TOLERANCES = ("r1_tolerance", "a_l_tolerance")
+
+
+def enumerate(spec: dict | None = None):
+    """Exhaustive: every candidate coil wound for ``spec`` and the smallest that meets it (or None):
+    (operating point, every candidate, chosen)."""
+    return choose(checked(spec))
+
+
+def explain(spec: dict | None = None):
+    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None."""
+    return explained(design, spec)
+
+
+def sensitivity(result: ConverterResult) -> list[dict]:
+    """What each tolerance costs: the design repeated with it at zero, one row per tolerance:
+    {"source", "core" (the chosen core then), "ve" (its volume, m^3), "ve_saved" (fraction of the volume saved)}."""
+    rows = []
+    for key in TOLERANCES:
+        tight = design({**result.spec, key: 0.0})
+        rows.append({"source": key, "core": f"{tight.core_shape} {tight.core_material}", "ve": tight.coil.ve,
+                     "ve_saved": 1 - tight.coil.ve / result.coil.ve})
+    return rows
+
+
+__all__ = ["AUDIO_BAND", "TABLE", "TOLERANCES", "ConverterResult", "checked", "design", "enumerate", "explain", "frequency",
+           "sensitivity", "source_params", "supplies", "sweep"]

@@ -1,0 +1,32 @@
+"""The op-amp current limiter (AN94002 figure 3) designed as a whole network: R7, R9, R10, R11, R12, R13.
+
+* :mod:`.model`: the network at every tolerance corner (exact), the spec's checks and each resistor's choices;
+* :mod:`.search`: the smallest series R7 and the network of the largest worst margin (branch and bound);
+* :mod:`.explain`: what can be met when nothing meets the spec;
+* :mod:`.result`: the result, verified at every corner, and its warnings;
+* :mod:`.analysis`: which tolerance eats the window, and a Monte Carlo lot.
+"""
+from ..common import explained
+from .analysis import SPREAD_SOURCES, monte_carlo_trip
+from .analysis import sensitivity as _sensitivity
+from .model import TABLE, checked, zener_range
+from .result import IC_LIMIT_MIN, LimiterResult, design, judge, warnings
+from .search import GAP, LEAF_SIZE
+from .search import enumerate_series as enumerate
+
+
+def explain(spec: dict | None = None):
+    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None
+    when a design meets it."""
+    return explained(design, spec)
+
+
+def sensitivity(result: LimiterResult) -> list[dict]:
+    """Which tolerance eats the trip-current window of a designed limiter, one row per source:
+    {"source", "share" (of the log spread), "margin_without" (the worst margin with that source removed)}."""
+    return [{"source": name, "share": share, "margin_without": margin}
+            for name, share, margin in _sensitivity(result.r7, result.network, result.spec)]
+
+
+__all__ = ["GAP", "IC_LIMIT_MIN", "LEAF_SIZE", "SPREAD_SOURCES", "TABLE", "LimiterResult", "checked", "design",
+           "enumerate", "explain", "judge", "monte_carlo_trip", "sensitivity", "warnings", "zener_range"]

@@ -1,0 +1,125 @@
+"""The op-amp current limiter (AN94002 figure 3) designed as a whole network: R7, R9, R10, R11, R12, R13.
+
+Problem. Every resistor takes a value of its series within its range (or the value it is pinned to). At
+every tolerance corner (:mod:`.model`: resistors, zener tolerance and drift, op-amp offset and
+bias current; exact) the trip current stays inside [i_no_trip (1 + m), i_must_trip (1 - m)] with m =
+``min_margin``, and both op-amp inputs stay ``input_headroom`` below the supply. Objective: the smallest R7
+(least loss and least drop at any motor current); among networks with that R7, the largest worst margin.
+
+Solution. R7 comes first: IPOPT minimises ln R7 over the continuous relaxation of all six resistors, a
+lower bound for every series design. Then, for each series R7 from that bound up, a branch and bound
+(:mod:`.branch_bound`, IPOPT on every node's relaxation) maximises the worst margin over the five divider
+resistors; the first R7 whose best network reaches ``min_margin`` is the answer. With four free divider
+resistors on E96 there are about 10^11 networks per R7, far too many to enumerate; on E6/E12 dividers the
+tests and ``tools/benchmark.py`` check that this search finds exactly what enumeration finds. The chosen
+network is re-verified at every corner by :func:`.model.verify`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ...sources.an94002 import circuit as an94002
+from ..common import Result, reported
+from . import model as net
+from .explain import explain
+from .model import TABLE, checked
+from .search import LEAF_SIZE, solve
+
+#: the motor ICs' own output current limits, minimum (datasheet_facts: TDA5144 / TDA5143T datasheets)
+IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
+
+
+@dataclass(frozen=True)
+class LimiterResult(Result):
+    r7: float = reported('ohm', 'R7')
+    r9: float = reported('ohm', 'R9')
+    r10: float = reported('ohm', 'R10')
+    r11: float = reported('ohm', 'R11')
+    r12: float = reported('ohm', 'R12')
+    r13: float = reported('ohm', 'R13')
+    i_trip_min: float = reported('A', 'lowest trip current')
+    i_trip_max: float = reported('A', 'highest trip current')
+    i_trip_nominal: float = reported('A', 'nominal trip current')
+    p_r7: float = reported('W', 'loss in R7 at the highest trip current (stalled motor)')
+    v_cs_nominal: float = reported('V', 'nominal sense voltage')
+    margin_low: float = reported('%', 'margin above i_no_trip')
+    margin_high: float = reported('%', 'margin below i_must_trip')
+    headroom_min: float = reported('V', 'least op-amp input distance below the supply')
+    divider_current: float = reported('A', 'current the dividers draw from the zener node')
+    margin_bound: float = reported('%', 'no network with this R7 has a worst margin above')  # proven by the search
+    binding: str = reported('', 'binding')
+    warnings: tuple = reported('', 'warnings')
+    r7_relaxed: float
+    nodes: int
+    r7_tried: int
+    unproven: tuple  # smaller R7 values whose search stopped at its node limit without finding a network
+
+    table = TABLE
+
+    @property
+    def network(self) -> tuple:
+        return self.r9, self.r10, self.r11, self.r12, self.r13
+
+
+def design(spec: dict | None = None, leaf_size: int = LEAF_SIZE) -> LimiterResult:
+    """The smallest series R7 with the divider network of the largest worst margin; verified at every corner.
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[current_limiter]`` table (keys of :data:`handbook.design.schema.TABLES`); defaults fill the rest.
+    leaf_size : int
+        A branch-and-bound node holding at most this many networks is evaluated whole instead of relaxed.
+
+    Returns
+    -------
+    LimiterResult
+        The chosen R7 and R9..R13 with their trip currents, margins and headroom at every corner.
+
+    Raises
+    ------
+    Infeasible
+        When no network of the series meets the spec; its message says what can be met.
+    """
+    s = checked(spec)
+    found = solve(s, leaf_size)
+    r7, network, out = found["r7"], found["network"], found["outcome"]
+    if r7 is None:
+        raise explain(s, found["r7_relaxed"])
+    v = net.verify(r7, network, s)
+    m_lo, m_hi = float(v["margin_low"]), float(v["margin_high"])
+    r9, r10, r11, r12, r13 = network
+    v_nominal = an94002.v_cs_trip(s["zener_voltage"], r9, r10, r11, r12, r13)
+    result = dict(
+        spec=s, r7=r7, r9=r9, r10=r10, r11=r11, r12=r12, r13=r13, i_trip_min=float(v["i_trip_min"]),
+        i_trip_max=float(v["i_trip_max"]), i_trip_nominal=float(v_nominal / r7), v_cs_nominal=float(v_nominal),
+        p_r7=float(v["i_trip_max"]) ** 2 * r7 * (1 + s["r7_tolerance"]), margin_low=m_lo, margin_high=m_hi,
+        headroom_min=float(v["headroom_min"]), divider_current=float(v["divider_current"]),
+        binding="the lowest trip current" if m_lo <= m_hi else "the highest trip current",
+        r7_relaxed=found["r7_relaxed"], nodes=out.nodes, r7_tried=found["tried"], margin_bound=out.bound,
+        unproven=found["unproven"])
+    return LimiterResult(**result, warnings=tuple(warnings(result, s)))
+
+
+def warnings(r: dict, s: dict) -> list[str]:
+    """What an engineer should know about a design that meets the spec."""
+    out = []
+    limit = IC_LIMIT_MIN[s["ic"]]
+    if r["i_trip_max"] > limit:
+        out.append(f"the highest trip current {r['i_trip_max']:.3g} A is above the {s['ic']}'s own output "
+                   f"limit (minimum {limit:g} A): on some boards the IC limits first")
+    if r["p_r7"] > s["r7_power_rating"]:
+        out.append(f"R7 dissipates up to {r['p_r7']:.3g} W while the limiter holds a stalled motor at the highest "
+                   f"trip current: more than its {s['r7_power_rating']:g} W rating (r7_power_rating)")
+    return out
+
+
+def judge(r7: float, network, s: dict) -> dict:
+    """Any limiter (the note's, say) by the same exact checks as a design: trip currents, margins, headroom."""
+    v = net.verify(r7, network, s)
+    out = {k: float(v[k]) for k in ("i_trip_min", "i_trip_max", "margin_low", "margin_high", "headroom_min")}
+    out["meets"] = bool(min(out["margin_low"], out["margin_high"]) >= s["min_margin"] - 1e-12
+                        and out["headroom_min"] >= s["input_headroom"] - 1e-12)
+    return out
+
+

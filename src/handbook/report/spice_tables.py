@@ -1,0 +1,64 @@
+"""The SPICE checks as the book shows them: "equation vs SPICE" tables with each tolerance's reason.
+
+The rows come from :mod:`handbook.spice` (:func:`handbook.spice.circuit.evaluate` for a circuit of the notes,
+:func:`handbook.spice.checks.confirm_rows` for a design); this module only lays them out.
+"""
+from __future__ import annotations
+
+from IPython.display import Markdown
+
+from ..core.units import eng
+from ..spice import checks
+from ..spice.circuit import evaluate
+from ..spice.runner import SpiceError, SpiceUnavailable
+from .tables import table
+
+
+def chapter_table(*circuits, by_circuit: bool | None = None):
+    """The chapters' "equation vs SPICE" table of one or more circuits (quantity, equation, SPICE, difference,
+    tolerance, verdict) with each tolerance's reason below it, as Markdown; or a line saying the SPICE
+    check was skipped and why when ngspice is missing. ``by_circuit`` (default: when more than one circuit is
+    given) adds a first column naming each row's circuit by its title, for decks that share quantities (the
+    LM4651 filter with 4 and 8 ohm, AC and transient)."""
+    try:
+        rows = [r for c in circuits for r in evaluate(c)]
+    except SpiceUnavailable as exc:
+        return Markdown(f"**SPICE check skipped:** {exc}.")
+    except SpiceError as exc:  # a netlist ngspice refused: said on the page, not a traceback
+        return Markdown(f"**SPICE run failed:** {exc}.")
+    titles = {c.id: c.title for c in circuits}
+    first = (len(circuits) > 1) if by_circuit is None else by_circuit
+    return rows_table(rows, lead={r["circuit"]: titles[r["circuit"]] for r in rows} if first else None)
+
+
+def rows_table(rows: list[dict], equation_head: str = "equation", lead: dict | None = None):
+    """Check rows (as :func:`evaluate` or ``checks.confirm_rows`` give them) as the book shows them: quantity,
+    equation, SPICE, difference, tolerance, verdict, then each tolerance's reason. ``lead``: circuit id ->
+    title, for a first column naming each row's circuit."""
+    name = (lambda r: [lead[r["circuit"]]]) if lead else (lambda r: [])
+    body = table([*(["circuit"] if lead else []), "quantity", equation_head, "SPICE", "difference", "tolerance",
+                  "verdict"],
+                 [[*name(r), r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
+                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", _tolerance(r["rtol"]),
+                   r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
+    why = "\n".join(f"- {''.join(t + ', ' for t in name(r))}*{r['quantity']}*, {_tolerance(r['rtol'])}"
+                    + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity" else "")
+                    + f": {r['why']}." for r in rows)
+    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)
+
+
+def _tolerance(rtol: float) -> str:
+    """±0.5 %, ±0.05 %, ±0.01 %: enough figures to show a tight tolerance as it is."""
+    return f"±{rtol * 100:.2g} %"
+
+
+def confirm_table(table: str, result):
+    """The design chapters' "Confirmed by simulation" table: quantity, the design's figure, SPICE's, the
+    difference, the tolerance and the verdict, with each tolerance's reason below; or why it was skipped."""
+    try:
+        rows = checks.confirm_rows(table, result)
+    except SpiceUnavailable as exc:
+        return Markdown(f"*SPICE check skipped: {exc}.*")
+    except SpiceError as exc:
+        return Markdown(f"**SPICE run failed:** {exc}.")
+    return rows_table(rows, equation_head="design (equations)")
