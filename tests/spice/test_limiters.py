@@ -8,8 +8,10 @@ import pytest
 from drawn_parts import assert_edit_caught, assert_same_parts
 
 from handbook.report import spice_tables
-from handbook.spice import limiter_design, limiters, models, runner
+from handbook.spice import models, runner
 from handbook.spice.circuit import Part, evaluate
+from handbook.spice.limiter import confirm as limiter_design
+from handbook.spice.limiter import decks as limiters
 
 BUILDERS = (limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limiters.supply_referenced)
 

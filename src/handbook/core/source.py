@@ -65,10 +65,12 @@ class Param:
             raise InputError(f"{name} = {value!r}: expected a finite number ({self.meaning})")
         if isinstance(self.default, int) and value != int(value):
             raise InputError(f"{name} = {value!r}: expected a whole number ({self.meaning})")
-        if self.low is not None and (value <= self.low if self.low_open else value < self.low) or (
-                self.high is not None and value > self.high):
-            raise InputError(f"{name} = {value!r}{self.unit_text} is out of range: use a value {self.range_text} "
-                             f"({self.meaning})")
+        from .validate import out_of_range
+
+        error = out_of_range(name, value, "" if self.unit == "1" else self.unit, self.low, self.high, self.low_open,
+                             self.meaning)
+        if error is not None:
+            raise error
         return int(value) if isinstance(self.default, int) else value
 
     @property

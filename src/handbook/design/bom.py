@@ -9,7 +9,25 @@ from pathlib import Path
 
 def rows(result: dict) -> list[dict]:
     """Reference, value (SI, for programs), value_text (with its unit, for people), tolerance, series, and why
-    each value was chosen."""
+    each value was chosen.
+
+    Parameters
+    ----------
+    result : dict
+        The four designs' results, {table: result}: ``result["commutation"]`` a
+        :class:`~handbook.design.commutation.CommutationResult`, ``"current_limiter"`` a
+        :class:`~handbook.design.limiter.LimiterResult`, ``"class_d"`` a :class:`~handbook.design.class_d.ClassDResult`
+        and ``"converter"`` a :class:`~handbook.design.converter.ConverterResult` (what
+        :func:`handbook.design.spec.run` returns).
+
+    Returns
+    -------
+    list of dict
+        One row per part, in the order C3, C4 (C5, C6 when designed), R7, R9..R13, D1, R_OSC, R_DLY, L1/L2,
+        C_BYP, heat sink, then the converter's L1 and R1: ``reference`` (str), ``value`` (float, SI: F, ohm, H,
+        the zener's V, the heat sink's K/W), ``value_text`` (str, with its unit), ``tolerance`` (fraction, or None
+        for the heat sink), ``series`` (str, "" where none) and ``reason`` (str).
+    """
     c, lim, cd, cv = result["commutation"], result["current_limiter"], result["class_d"], result["converter"]
     sc, sl, sd = c.spec, lim.spec, cd.spec
     table = [
@@ -53,7 +71,20 @@ def rows(result: dict) -> list[dict]:
 
 
 def converter_rows(cv) -> list[tuple]:
-    """The TCA5600 converter's coil and sense resistor (the class-D filter already uses L1, L2)."""
+    """The TCA5600 converter's coil and sense resistor (the class-D filter already uses L1, L2).
+
+    Parameters
+    ----------
+    cv : ConverterResult
+        The converter's design (:func:`handbook.design.converter.design`).
+
+    Returns
+    -------
+    list of tuple
+        Two rows, (reference, value, tolerance, series, reason): the coil "L1 (TCA5600)" (its nominal
+        inductance, H; A_L's tolerance as a fraction; no series) and "R1 (TCA5600)" (the series part, ohm;
+        R1's tolerance as a fraction; ``r1_series``).
+    """
     from ..core.units import eng
 
     sv = cv.spec
@@ -79,7 +110,23 @@ _UNITS = {"C": "F", "R": "ohm", "L": "H", "D": "V"}
 
 
 def readable(ref: str, value: float, series: str) -> str:
-    """The value as a person reads it: 18 nF, 1.21 kΩ, 100 µH, 8.2 V (zener), 0.68 K/W."""
+    """The value as a person reads it: 18 nF, 1.21 kΩ, 100 µH, 8.2 V (zener), 0.68 K/W.
+
+    Parameters
+    ----------
+    ref : str
+        The part's reference: its first letter gives the unit (C: F, R: ohm, L: H, D: V); "heat sink": K/W.
+    value : float
+        The part's value in that SI unit.
+    series : str
+        The part's E-series (not used: the value is shown as it is).
+
+    Returns
+    -------
+    str
+        The value with an engineering prefix and its unit (three significant figures for the heat sink; the
+        bare number for a reference of no known unit).
+    """
     from ..core.units import eng
 
     if ref == "heat sink":
@@ -89,7 +136,16 @@ def readable(ref: str, value: float, series: str) -> str:
 
 
 def write(table: list[dict], path: str | Path) -> None:
-    """Write the BOM as CSV atomically: a complete file or none at all."""
+    """Write the BOM as CSV atomically: a complete file or none at all.
+
+    Parameters
+    ----------
+    table : list of dict
+        The rows, as :func:`rows` returns them (keys ``reference``, ``value``, ``value_text``, ``tolerance``,
+        ``series``, ``reason``).
+    path : str or pathlib.Path
+        The CSV file to write (replaced if it exists); its directory must exist.
+    """
     path = Path(path)
     fd, tmp = tempfile.mkstemp(prefix=".bom-", suffix=".csv", dir=path.parent if str(path.parent) else ".")
     try:

@@ -61,6 +61,43 @@ def search(values: list[np.ndarray], relax, evaluate, threshold: float, gap: flo
     A node holding at most ``leaf_size`` choices is evaluated whole instead (exact, and cheaper than one
     relaxation: about 10 ms of IPOPT against a few thousand exact evaluations). ``cheap_bound(lb, ub)``,
     if given, is a valid upper bound tried before the relaxation (a node it settles costs no IPOPT call).
+
+    Parameters
+    ----------
+    values : list of numpy.ndarray
+        One sorted array per variable: the values it may take (an E-series within its range, or one pinned
+        value), in the variable's own unit (ohm for the limiter's resistors).
+    relax : callable
+        ``relax(lb, ub, state)`` -> (bound, x, state), or None when the box holds no feasible point: ``lb`` and
+        ``ub`` are arrays of k values (not indices), ``bound`` an upper bound of the score over the box, ``x`` the
+        relaxed optimum (k values), ``state`` whatever warm-starts the children (None at the root).
+    evaluate : callable
+        ``evaluate(choices)`` -> array of n exact scores for an (n, k) array of choices (-inf where infeasible).
+    threshold : float
+        The least score a choice must reach to count (in the score's unit); nodes whose bound is below it are
+        dropped.
+    gap : float
+        A node is explored only if its bound beats the best score found by more than this (score's unit).
+    scan : int or None
+        The index of a variable whose whole node range is tried in each heuristic, or None.
+    max_nodes : int
+        Relaxations after which the search stops once a choice reaching ``threshold`` is known.
+    max_nodes_unsolved : int
+        Relaxations after which the search stops while none is known (``proven`` is then False).
+    leaf_size : int
+        A node holding at most this many choices is evaluated whole instead of relaxed.
+    cheap_bound : callable or None
+        ``cheap_bound(lb, ub)`` -> a valid upper bound (float) of the score over the box, tried before
+        ``relax``; None: none.
+
+    Returns
+    -------
+    Outcome
+        ``score`` (the best exact score, -inf when nothing reached ``threshold``), ``choice`` (its k values, or
+        None), ``nodes`` (relaxations solved), ``bound`` (the best bound left open when the search stopped; the
+        score, or the largest bound dropped within ``gap``, when proven), ``proven`` (False when a node limit
+        stopped it), ``leaves`` and ``cheap`` (nodes settled whole and by ``cheap_bound``) and ``relaxations``
+        (every relaxation's bound, in the order solved).
     """
     k = len(values)
     best = Outcome(-np.inf, None, 0, np.inf, True)

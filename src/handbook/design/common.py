@@ -1,26 +1,144 @@
 """What every design shares: completing and checking its table, and the result's JSON summary."""
 from __future__ import annotations
 
+import difflib
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field, fields
 
 from ..core import InputError
-from ..core.source import unknown_key_message
 from .schema import TABLES
 
 
-def completed(table: str, spec: dict | None) -> dict:
-    """The table's defaults with ``spec`` applied, each value checked against the schema."""
+def key_error(table: str, key: str) -> InputError:
+    """The error for ``key`` in ``[table]`` where the schema has no such key: the table it belongs in, if
+    another has it, else the nearest key of this table, else the list of them.
+
+    Parameters
+    ----------
+    table : str
+        The table the key was written in ("commutation", "current_limiter", "class_d", "converter").
+    key : str
+        The key that table's schema does not have.
+
+    Returns
+    -------
+    InputError
+        The error to raise (not raised here), its message naming the key's table or the near match.
+    """
+    home = next((t for t, params in TABLES.items() if any(p.name == key for p in params)), None)
+    if home is not None and home != table:
+        return InputError(f"{key} is not a key of [{table}]: it belongs in [{home}]")
+    names = [p.name for p in TABLES[table]]
+    near = difflib.get_close_matches(key, names, n=1)
+    return InputError(f"unknown key {table}.{key}" + (f": did you mean {table}.{near[0]}?" if near else
+                                                     f": known keys are {', '.join(names)}"))
+
+
+class Table(Mapping):
+    """One table of a specification, checked: every key of the schema present (defaults filled in), every
+    value in range, the table's own contradictions ruled out. Frozen; read as a mapping (``s["rpm_min"]``) or
+    by attribute (``s.rpm_min``). Only a design's ``checked`` makes one, so a design handed a Table does not
+    check it again; ``{**s, key: value}`` is a plain dict, checked afresh where it is used as a spec.
+    """
+
+    __slots__ = ("name", "_values")
+
+    def __init__(self, name: str, values: Mapping):
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "_values", dict(values))
+
+    def __getitem__(self, key: str):
+        return self._values[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __getattr__(self, key: str):
+        try:
+            return self._values[key]
+        except KeyError:
+            raise AttributeError(f"[{self.name}] has no key {key!r}") from None
+
+    def __setattr__(self, key, value):
+        raise AttributeError(f"a checked [{self.name}] table is frozen: make a new spec with {{**s, {key!r}: ...}}")
+
+    def __repr__(self) -> str:
+        return f"Table({self.name!r}, {self._values!r})"
+
+
+def is_checked(table: str, spec) -> bool:
+    """``spec`` is already a checked ``[table]``: a design takes it as it is.
+
+    Parameters
+    ----------
+    table : str
+        The table's name.
+    spec : object
+        What a design was handed: a :class:`Table`, a mapping of keys, or None.
+
+    Returns
+    -------
+    bool
+        True when ``spec`` is a :class:`Table` of that name.
+    """
+    return isinstance(spec, Table) and spec.name == table
+
+
+def completed(table: str, spec: Mapping | None) -> dict:
+    """The table's defaults with ``spec`` applied, each value checked against the schema (one message style:
+    :meth:`handbook.core.source.Param.check`).
+
+    Parameters
+    ----------
+    table : str
+        The table's name in the schema (:data:`~handbook.design.schema.TABLES`).
+    spec : Mapping or None
+        The keys given, {key: value} in SI units; None: none.
+
+    Returns
+    -------
+    dict
+        Every key of the table, {key: value}: the default where none is given, else the checked value (a whole
+        number for a key whose default is one).
+
+    Raises
+    ------
+    InputError
+        For a key the table does not have, a value of the wrong type, not finite or out of range.
+    """
     params = {p.name: p for p in TABLES[table]}
     out = {name: p.default for name, p in params.items()}
     for key, value in (spec or {}).items():
         if key not in params:
-            raise InputError(unknown_key_message(f"key in [{table}]:", key, params))
+            raise key_error(table, key)
         out[key] = value if value is None and params[key].default is None else params[key].check(value, f"{table}.")
     return out
 
 
 def ordered(table: str, low_key: str, high_key: str, s: dict, unit: str, strict: bool = True) -> None:
-    """``s[low_key]`` must be below ``s[high_key]`` (or not above, with ``strict`` False)."""
+    """``s[low_key]`` must be below ``s[high_key]`` (or not above, with ``strict`` False).
+
+    Parameters
+    ----------
+    table : str
+        The table's name, for the message.
+    low_key, high_key : str
+        The two keys of ``s``.
+    s : dict
+        The completed table, {key: value}.
+    unit : str
+        The two values' unit, for the message ("A", "V", "rpm").
+    strict : bool
+        True: ``s[low_key]`` must be below ``s[high_key]``; False: it may equal it.
+
+    Raises
+    ------
+    InputError
+        When the two are not in that order.
+    """
     low, high = s[low_key], s[high_key]
     if (low >= high) if strict else (low > high):
         verb = "must be below" if strict else "must not exceed"
@@ -38,7 +156,21 @@ class Output:
 
 def reported(unit: str, label: str):
     """A result field the design reports (in the JSON, the text output and the chapters' tables), with its
-    unit and its label: the one place either is written."""
+    unit and its label: the one place either is written.
+
+    Parameters
+    ----------
+    unit : str
+        The field's SI unit ("F", "ohm", "Hz", ...), "%" for a fraction shown as a percentage, "" for text or a
+        plain number.
+    label : str
+        What the field is, for people.
+
+    Returns
+    -------
+    dataclasses.Field
+        A dataclass field with no default whose metadata carries ``unit`` and ``label``.
+    """
     return field(metadata={"unit": unit, "label": label})
 
 
@@ -53,17 +185,49 @@ class Result:
 
     @classmethod
     def outputs(cls) -> tuple[Output, ...]:
-        """The reported fields, in order, with unit and label."""
+        """The reported fields, in order, with unit and label.
+
+        Returns
+        -------
+        tuple of Output
+            One (key, unit, label) per field declared with :func:`reported`, in the class's field order.
+        """
         return tuple(Output(f.name, f.metadata["unit"], f.metadata["label"]) for f in fields(cls) if "unit" in f.metadata)
 
     def summary(self) -> dict:
-        """The reported values in SI units, keyed as in the JSON output."""
+        """The reported values in SI units, keyed as in the JSON output.
+
+        Returns
+        -------
+        dict
+            {key: value} for every reported field (:meth:`outputs`), in SI units (fractions where the unit is
+            "%"), in their order.
+        """
         return {o.key: getattr(self, o.key) for o in self.outputs()}
 
 
 def explained(design, spec: dict | None):
     """Why ``spec`` cannot be met, and what can (the :class:`~handbook.design.solvers.Infeasible` that
-    ``design`` raises), or None when ``design`` meets it: every design's ``explain``."""
+    ``design`` raises), or None when ``design`` meets it: every design's ``explain``.
+
+    Parameters
+    ----------
+    design : callable
+        A design's ``design(spec)``, which raises :class:`~handbook.design.solvers.Infeasible` when nothing meets
+        the spec.
+    spec : dict or None
+        The design's table, {key: value} in SI units (None: the defaults).
+
+    Returns
+    -------
+    Infeasible or None
+        The exception ``design`` raised (not raised again), or None when it met the spec.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is invalid (``design`` raises it, and it is not caught).
+    """
     from .solvers import Infeasible
     try:
         design(spec)

@@ -295,17 +295,45 @@ TABLES: dict[str, tuple[Param, ...]] = _tables()
 
 
 def defaults(table: str) -> dict:
+    """Every key of one table with its default.
+
+    Parameters
+    ----------
+    table : str
+        The table's name: "commutation", "current_limiter", "class_d" or "converter" (a ``KeyError`` otherwise).
+
+    Returns
+    -------
+    dict
+        {key: default}, in the schema's order; SI values (rpm for speeds, fractions for tolerances, C for
+        temperatures), None for a key whose absence means "not given" (a pinned resistor, motor data).
+    """
     return {p.name: p.default for p in TABLES[table]}
 
 
 def key_rows() -> list[tuple[str, str, str, str, str]]:
-    """(table, key, default, unit, meaning) for every key: the README table and the help read this."""
+    """(table, key, default, unit, meaning) for every key: the README table and the help read this.
+
+    Returns
+    -------
+    list of tuple of str
+        One (table, key, default, unit, meaning) per key, tables and keys in the schema's order: the default as
+        its ``repr`` ("—" where there is none), the unit as the schema writes it ("ohm", "K/W", "1" for a
+        fraction, "" for text).
+    """
     return [(t, p.name, "—" if p.default is None else repr(p.default), p.unit, p.meaning)
             for t, params in TABLES.items() for p in params]
 
 
 def markdown_table() -> str:
-    """The README's table of keys, rendered from this schema (a test keeps the README in step)."""
+    """The README's table of keys, rendered from this schema (a test keeps the README in step).
+
+    Returns
+    -------
+    str
+        A Markdown table, header and one row per key (:func:`key_rows`), lines joined by newlines with no
+        trailing newline.
+    """
     lines = ["| table | key | default | unit | meaning |", "|---|---|---|---|---|"]
     for t, key, default, unit, meaning in key_rows():
         shown = default if default == "—" else f"`{default}`"

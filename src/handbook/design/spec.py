@@ -10,14 +10,11 @@ so an empty file designs the notes' own examples. All values are in SI units.
 from __future__ import annotations
 
 import difflib
-import math
-import numbers
 import tomllib
+from collections.abc import Mapping
 from pathlib import Path
 
 from ..core import InputError
-from ..core.source import unknown_key_message
-from ..core.validate import out_of_range
 from . import class_d, commutation, converter, limiter
 from .schema import TABLES
 from .solvers import Infeasible
@@ -30,18 +27,52 @@ OUTPUTS = {"commutation": commutation.CommutationResult.outputs(), "current_limi
            "class_d": class_d.ClassDResult.outputs(), "converter": converter.ConverterResult.outputs()}
 
 
-def _table_of(key: str) -> str | None:
-    return next((t for t, params in TABLES.items() if any(p.name == key for p in params)), None)
+class Spec(Mapping):
+    """A read specification: a mapping {table: the keys given there}, as written (every table present, empty
+    where nothing was given), with every table checked once, at reading: ``tables`` {table: its checked
+    :class:`~handbook.design.common.Table`}, which the designs take without checking again."""
+
+    def __init__(self, given: dict, tables: dict):
+        self._given, self.tables = given, tables
+
+    def __getitem__(self, table: str) -> dict:
+        return self._given[table]
+
+    def __iter__(self):
+        return iter(self._given)
+
+    def __len__(self) -> int:
+        return len(self._given)
 
 
-def parse(data: dict) -> dict:
-    """Checked spec: {table: {key: value}} with every table present (missing keys left to the defaults)."""
+def parse(data: dict) -> Spec:
+    """A specification read from its TOML tables: every key, value and contradiction checked here, once.
+
+    Parameters
+    ----------
+    data : dict
+        The parsed TOML document, {table: {key: value}} in SI units (speeds in rpm, temperatures in C);
+        tables and keys left out take the notes' values.
+
+    Returns
+    -------
+    Spec
+        The keys as given, {table: {key: value}} with every table present, and ``tables``: each table checked
+        and completed with its defaults (:class:`~handbook.design.common.Table`).
+
+    Raises
+    ------
+    InputError
+        For a document that is not a set of tables, an unknown table or key (with the near match, or the table
+        a misplaced key belongs in), a value of the wrong type, not finite or out of range, or limits that
+        contradict each other.
+    """
     if not isinstance(data, dict):
         raise InputError("the specification must be a TOML document with tables")
-    out = {t: {} for t in TABLES}
+    given = {t: {} for t in TABLES}
     for table, body in data.items():
         if table not in TABLES:
-            home = _table_of(table)
+            home = next((t for t, params in TABLES.items() if any(p.name == table for p in params)), None)
             if home is not None:
                 raise InputError(f"{table} = {body!r} is written outside any table: put it under [{home}]")
             near = difflib.get_close_matches(table, TABLES, n=1)
@@ -49,31 +80,28 @@ def parse(data: dict) -> dict:
                                                             f": use {', '.join('[' + t + ']' for t in TABLES)}"))
         if not isinstance(body, dict):
             raise InputError(f"{table} must be a table ([{table}]), not a value")
-        params = {p.name: p for p in TABLES[table]}
-        for key, value in body.items():
-            if key not in params:
-                home = _table_of(key)
-                if home is not None:  # a known key in the wrong table
-                    raise InputError(f"{key} is not a key of [{table}]: it belongs in [{home}]")
-                near = difflib.get_close_matches(key, params, n=1)
-                raise InputError(f"unknown key {table}.{key}" + (f": did you mean {table}.{near[0]}?" if near else
-                                                                 f": known keys are {', '.join(params)}"))
-            out[table][key] = _checked(params[key], value, f"{table}.{key}")
-    return out
-
-
-def _checked(param, value, name: str):
-    """The schema's check of one value; a number out of range is told with engineering prefixes ('50 MHz',
-    'from 1 kHz to 1 MHz') and the key's meaning."""
-    if (isinstance(value, numbers.Real) and not isinstance(value, bool) and math.isfinite(value)
-            and not param.choices and not isinstance(param.default, str)):
-        error = out_of_range(name, value, param.unit, param.low, param.high, param.low_open, param.meaning)
-        if error is not None:
-            raise error
-    return param.check(value, name[: -len(param.name)])
+        given[table] = dict(body)
+    return Spec(given, {t: DESIGNS[t].checked(given[t]) for t in DESIGNS})
 
 
 def load(path: str | Path) -> dict:
+    """Read and check a TOML specification file (:func:`parse`).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The TOML file, UTF-8.
+
+    Returns
+    -------
+    Spec
+        The checked specification, as :func:`parse` returns it.
+
+    Raises
+    ------
+    InputError
+        When the file cannot be read, is not valid UTF-8 TOML, or :func:`parse` rejects it.
+    """
     try:
         text = Path(path).read_bytes()
     except OSError as exc:
@@ -85,13 +113,49 @@ def load(path: str | Path) -> dict:
     return parse(data)
 
 
-def check(spec: dict) -> dict:
-    """Every table completed with the defaults and checked (ranges and contradictions) before any solver."""
+def check(spec: Mapping) -> dict:
+    """Every table completed with the defaults and checked (ranges and contradictions) before any solver: a
+    :class:`Spec` was checked when it was read, a plain {table: keys} mapping is checked here.
+
+    Parameters
+    ----------
+    spec : Mapping
+        A :class:`Spec`, or {table: {key: value}} in SI units (tables left out take their defaults).
+
+    Returns
+    -------
+    dict
+        {table: its checked :class:`~handbook.design.common.Table`} for all four tables.
+
+    Raises
+    ------
+    InputError
+        When a table of a plain mapping is invalid.
+    """
+    if isinstance(spec, Spec):
+        return spec.tables
     return {t: DESIGNS[t].checked(spec.get(t, {})) for t in DESIGNS}
 
 
 def run_each(spec: dict) -> dict:
-    """Each design on its own: {table: its Result, or the Infeasible saying what can be met}."""
+    """Each design on its own: {table: its Result, or the Infeasible saying what can be met}.
+
+    Parameters
+    ----------
+    spec : Mapping
+        A :class:`Spec`, or {table: {key: value}} in SI units (tables left out take their defaults).
+
+    Returns
+    -------
+    dict
+        {table: the design's result (a :class:`~handbook.design.common.Result`), or the
+        :class:`~handbook.design.solvers.Infeasible` it raised (not raised)} for all four tables.
+
+    Raises
+    ------
+    InputError
+        When a table is invalid (before any design runs).
+    """
     checked = check(spec)
     out = {}
     for table, module in DESIGNS.items():
@@ -103,7 +167,25 @@ def run_each(spec: dict) -> dict:
 
 
 def run(spec: dict) -> dict:
-    """All four designs. Raises InputError for bad input, Infeasible for the first unmeetable table."""
+    """All four designs. Raises InputError for bad input, Infeasible for the first unmeetable table.
+
+    Parameters
+    ----------
+    spec : Mapping
+        A :class:`Spec`, or {table: {key: value}} in SI units (tables left out take their defaults).
+
+    Returns
+    -------
+    dict
+        {table: the design's :class:`~handbook.design.common.Result`} for all four tables.
+
+    Raises
+    ------
+    InputError
+        When a table is invalid.
+    Infeasible
+        The first (in the order of :data:`DESIGNS`) that a design raised, after all four have run.
+    """
     out = run_each(spec)
     for result in out.values():
         if isinstance(result, Infeasible):
@@ -112,9 +194,19 @@ def run(spec: dict) -> dict:
 
 
 def summary(result: dict) -> dict:
-    """{table: {output key: SI value}} for the JSON output."""
+    """{table: {output key: SI value}} for the JSON output.
+
+    Parameters
+    ----------
+    result : dict
+        {table: its :class:`~handbook.design.common.Result`}, as :func:`run` returns it.
+
+    Returns
+    -------
+    dict
+        {table: {output key: value}}, each result's :meth:`~handbook.design.common.Result.summary` (SI units).
+    """
     return {t: r.summary() for t, r in result.items()}
 
 
-__all__ = ["DESIGNS", "OUTPUTS", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each", "summary",
-           "unknown_key_message"]
+__all__ = ["DESIGNS", "OUTPUTS", "Spec", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each", "summary"]

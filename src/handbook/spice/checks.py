@@ -2,20 +2,20 @@
 designs confirmed by simulation (`python -m handbook design SPEC.toml --spice`)."""
 from __future__ import annotations
 
-from . import class_d, converter, decoupling, limiter_design, limiters, speed, timers
+from . import class_d, converter, decoupling, limiter, speed, timers
 from .circuit import evaluate
 from .runner import SpiceError, SpiceUnavailable, available, why_unavailable
 
 #: the circuit builders, each () -> Circuit with the notes' values
 BUILDERS = (
-    limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limiters.supply_referenced,
+    limiter.one_transistor, limiter.opamp, limiter.opamp_corner, limiter.supply_referenced,
     timers.start_oscillator, timers.commutation_delay, timers.watchdog, speed.circuit, speed.loop_filter,
     decoupling.circuit,
     class_d.circuit, class_d.circuit_8ohm, class_d.ripple, class_d.ripple_8ohm, converter.circuit,
 )
 
 #: design table -> the function taking that design's result, returning its SPICE figures
-DESIGN_CHECKS = {"commutation": timers.design_check, "current_limiter": limiter_design.design_check,
+DESIGN_CHECKS = {"commutation": timers.design_check, "current_limiter": limiter.design_check,
                  "class_d": class_d.design_check}
 
 

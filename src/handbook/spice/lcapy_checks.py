@@ -83,7 +83,7 @@ def _held(cct, top: str, bottom: str):
 def opamp_netlist(p: dict | None = None) -> str:
     """The op-amp limiter (AN94002 figure 3) for lcapy, from :func:`limiters.opamp_parts` and
     :data:`limiters.OPAMP_NODES`: the loop closed through the motor."""
-    from . import limiters
+    from .limiter import decks as limiters
 
     q = {**limiters.opamp_defaults(), **(p or {})}
     u1 = _nodes(limiters.OPAMP_NODES["U1"], 5)  # inp inn vcc vee out
@@ -114,7 +114,7 @@ def compare() -> dict:
     part values, an94002.v_cs_trip of the same values)}."""
     from ..sources.an94002 import circuit as note
     from ..sources.an94002 import equations as eqs
-    from . import limiters
+    from .limiter import decks as limiters
 
     held = trip_from_netlist()
     q = limiters.opamp_defaults()
@@ -134,7 +134,7 @@ def supply_netlist(closed: bool = True) -> str:
     """AN93008's limiter for lcapy from :func:`limiters.supply_parts` and :data:`limiters.SUPPLY_NODES`:
     closed (the op-amp and the motor's loop) or open (no op-amp: its inputs draw nothing; the motor an
     independent current I_M)."""
-    from . import limiters
+    from .limiter import decks as limiters
 
     out = _nodes(limiters.SUPPLY_NODES["U1"], 5)[4]
     stand = {"VS": lambda n: [f"VS {n[0]} {n[1]} dc {{V_s}}"]}

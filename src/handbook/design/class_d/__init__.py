@@ -13,18 +13,67 @@ TABLE = "class_d"
 
 
 def enumerate(spec: dict | None = None):
-    """Exhaustive: the best (R_OSC, L, C_BYP, R_DLY) over the whole series grid, or None."""
+    """Exhaustive: the best (R_OSC, L, C_BYP, R_DLY) over the whole series grid, or None.
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[class_d]`` table, {key: value} in SI units; missing keys take their defaults, None takes them all.
+
+    Returns
+    -------
+    tuple of float or None
+        (R_OSC in ohm, L in H, C_BYP in F, R_DLY in ohm) of the best series design, or None when no series
+        design meets every check.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is invalid.
+    Infeasible
+        When no series R_DLY gives ``dead_time_min``.
+    """
     return _enumerate_series(spec)
 
 
 def explain(spec: dict | None = None):
-    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None."""
+    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None.
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[class_d]`` table, {key: value} in SI units; missing keys take their defaults, None takes them all.
+
+    Returns
+    -------
+    Infeasible or None
+        The exception :func:`design` raises (its message, and ``achievable``: what can be met), not raised; None
+        when the spec can be met.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` itself is invalid.
+    """
     return explained(design, spec)
 
 
 def sensitivity(result: ClassDResult) -> list[dict]:
     """What each tolerance eats, one row per case (typical, each tolerance alone at its limit, all):
-    {"source", check: margin for every check}."""
+    {"source", check: margin for every check}.
+
+    Parameters
+    ----------
+    result : ClassDResult
+        A design (:func:`design`): its checked spec and its R_OSC, L, C_BYP and R_DLY are evaluated.
+
+    Returns
+    -------
+    list of dict
+        One row per case, "typical (no tolerance)" first and "all at their limits" last: ``source`` (str) and,
+        for each check of :data:`~handbook.design.class_d.model.CHECKS`, its margin at the worst corner (a
+        fraction of its limit; negative where it fails).
+    """
     rows = _sensitivity(result.spec, result.r_osc, result.l_out, result.c_out, result.r_dly)
     return [{"source": name, **margins} for name, margins in rows.items()]
 

@@ -20,14 +20,41 @@ DATASHEET_PARTS = {"r_osc": 3.9e3, "l_out": 50e-6, "c_out": 5e-6, "r_dly": 5e3}
 
 
 def datasheet_application(s: dict) -> dict:
-    """The datasheet's own R_OSC, L, C_BYP and R_DLY through every check of the design, at every corner."""
+    """The datasheet's own R_OSC, L, C_BYP and R_DLY through every check of the design, at every corner.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    dict
+        The figures of :data:`DATASHEET_PARTS` as :func:`~handbook.design.class_d.model.one` gives them (SI
+        units; ``margins`` {check: fraction}, ``ok`` bool).
+    """
     p = DATASHEET_PARTS
     return model.one(s, p["r_osc"], p["l_out"], p["c_out"], p["r_dly"])
 
 
 def binding_text(sol, fig: dict) -> str:
     """The constraints IPOPT's multipliers name at the continuous optimum, then the tightest margins of the
-    series design."""
+    series design.
+
+    Parameters
+    ----------
+    sol : Solution
+        IPOPT's continuous optimum (:func:`~handbook.design.class_d.result.solve`).
+    fig : dict
+        The series design's figures (:func:`~handbook.design.class_d.model.at`); its ``margins`` {check:
+        fraction} are read.
+
+    Returns
+    -------
+    str
+        The binding constraints' names, each once ("none" when no multiplier is above 1e-7), then the two
+        smallest margins of the series design as percentages.
+    """
     names = [n for n in sol.binding(1e-7) if n != "heat sink objective"]
     names = list(dict.fromkeys(names))
     tight = sorted(fig["margins"].items(), key=lambda kv: kv[1])[:2]
@@ -36,7 +63,27 @@ def binding_text(sol, fig: dict) -> str:
 
 
 def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
-    """What a valid design does that is implausible: each warning says its threshold and why."""
+    """What a valid design does that is implausible: each warning says its threshold and why.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    fig : dict
+        The design's figures as plain floats (:func:`~handbook.design.class_d.model.at`): ``theta_sa_required``
+        (K/W), ``f_sw_min`` (Hz) and ``i_peak`` (A) are read.
+    l_out : float
+        The filter inductors' L, H.
+    c_out : float
+        C_BYP, F.
+
+    Returns
+    -------
+    list of str
+        The warnings, possibly none: a heat sink given or needed outside what is made (:data:`THETA_SA_MADE`) or
+        none needed at all, a ``p_continuous`` above what the amplifier delivers or below ``p_out``, a load
+        outside the models' 4 to 8 ohm, C_BYP above 50 uF, L above ten times the datasheet's 50 uH.
+    """
     out = []
     need, path = fig["theta_sa_required"], DEV["theta_jc"][s["package"]] + s["theta_cs"]
     free_air = lm4651.THETA_JA[s["package"]]
@@ -135,7 +182,28 @@ def _heat_sink_reach(s: dict, ev: dict, achievable: dict) -> str:
 
 def infeasible(s: dict, r_dly: float, searched=None):
     """Raise the Infeasible that says, for each check no series design meets, the best it reaches while every
-    other check holds (the whole grid, exhaustively; ``searched`` = (R_OSC, L, C, figures) if evaluated)."""
+    other check holds (the whole grid, exhaustively; ``searched`` = (R_OSC, L, C, figures) if evaluated).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_dly : float
+        The design's R_DLY, ohm.
+    searched : tuple or None
+        (R_OSC in ohm, L in H, C_BYP in F, figures): flat candidate arrays and their
+        :func:`~handbook.design.class_d.model.figures` (None where not yet evaluated), the set already searched;
+        None: the whole series grid.
+
+    Raises
+    ------
+    Infeasible
+        Always: when no series R_OSC keeps the oscillator inside 50..225 kHz at both corners, else naming each
+        check no candidate meets with the best it reaches while the others hold (``achievable``: those values
+        in SI units, and for the heat sink the largest ``p_continuous`` (W) and hottest ``t_ambient`` (C) it
+        carries), or, when each check can be met alone but not all together, the candidate closest to meeting
+        all and by how much it misses each.
+    """
     r, l_out, c_out, fig = searched if searched is not None else (*model.grid(s, r_dly), None)
     if not r.size:
         raise Infeasible(TABLE, "no series R_OSC keeps the oscillator inside 50..225 kHz at both tolerance "

@@ -28,7 +28,19 @@ CHECKS = ("oscillator range", "THD+N", "clipping", "ripple", "audio band", "filt
 
 
 def corner_factors(s: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Multipliers of f, L and C at the eight corners."""
+    """Multipliers of f, L and C at the eight corners.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (f factors, L factors, C factors), eight pure numbers each, in the order of :data:`CORNERS`: 1 -
+        ``osc_tol_slow`` or 1 + ``osc_tol_fast``, 1 -+ ``l_tolerance``, 1 -+ ``c_tolerance``.
+    """
     fo = np.where(CORNERS[:, 0] < 0, 1 - s["osc_tol_slow"], 1 + s["osc_tol_fast"])
     return fo, 1 + s["l_tolerance"] * CORNERS[:, 1], 1 + s["c_tolerance"] * CORNERS[:, 2]
 
@@ -36,7 +48,25 @@ def corner_factors(s: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 def band_deviation_db(f_audio, l_out, c_out, r_load):
     """Largest deviation of |H| from 0 dB over 0..f_audio (closed form): |H| rises to its peak at
     x_p = sqrt(1 - 1/(2 Q^2)) (when Q > 1/sqrt 2) and falls after it, so the band's extremes are |H(0)| = 1,
-    |H(f_audio)| and the peak 1 / (u (2 - u)), u = 1/(2 Q^2), when it lies inside the band."""
+    |H(f_audio)| and the peak 1 / (u (2 - u)), u = 1/(2 Q^2), when it lies inside the band.
+
+    Parameters
+    ----------
+    f_audio : float
+        The top of the audio band, Hz.
+    l_out : float or numpy.ndarray
+        The filter inductors' L, H (arrays broadcast).
+    c_out : float or numpy.ndarray
+        C_BYP, F.
+    r_load : float
+        The load resistance, ohm.
+
+    Returns
+    -------
+    numpy.ndarray
+        The largest deviation of the loaded filter's |H| from 0 dB over 0..f_audio, dB (not negative), one per
+        candidate.
+    """
     x2 = (f_audio / lm4651.filter_f0(l_out, c_out)) ** 2
     g_top = lm4651.filter_gain2(f_audio, l_out, c_out, r_load)
     u = 1 / (2 * lm4651.filter_q(l_out, c_out, r_load) ** 2)
@@ -57,6 +87,21 @@ def band_deviation_box_db(s: dict, l_out, c_out):
     Along that edge the in-band maximum is at L* of :func:`~handbook.sources.lm4651.circuit.filter_worst_peak_l`
     clipped to the box (below L* the gain at f_audio climbs to it; above L*, it falls, and once the peak
     enters the band the peak falls with Q). So: the four corners and that one point.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+        ``r_load``, ``f_audio``, ``l_tolerance`` and ``c_tolerance`` are read.
+    l_out : float or numpy.ndarray
+        The filter inductors' nominal L, H (arrays broadcast).
+    c_out : float or numpy.ndarray
+        C_BYP, nominal, F.
+
+    Returns
+    -------
+    numpy.ndarray
+        The largest deviation of |H| from 0 dB over the band and the L, C tolerance box, dB, one per candidate.
     """
     rl, fa = s["r_load"], s["f_audio"]
     tl, c_hi = s["l_tolerance"], c_out * (1 + s["c_tolerance"])
@@ -75,6 +120,24 @@ def heat(s: dict, f, theta_sa=None, bare=False):
     state). ``bare``: no heat sink, the package alone at the thermal table's theta_JA; where that steady
     state would pass T_jmax (or there is none) the shutdown trips, and T_j reads T_a + theta_JA P(T_jmax),
     where the junction heads at R_DS(on)'s T_jmax value: above T_jmax, finite.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    f : float or numpy.ndarray
+        The oscillator frequency, Hz (arrays broadcast).
+    theta_sa : float or numpy.ndarray or None
+        The heat sink's thermal resistance, sink to air, K/W; None: the one needed.
+    bare : bool
+        True: no heat sink, the package's theta_JA alone (``theta_sa`` not used).
+
+    Returns
+    -------
+    tuple
+        (theta_SA needed to hold T_j at 150 C - ``tj_margin``, K/W; T_j with ``theta_sa``, C, inf where there is
+        no steady state (``bare``: the package alone, and past T_jmax the shutdown's reading described above);
+        the LM4652's dissipation at that T_j, W), each broadcast over ``f``.
     """
     p = lm4651.p_clip(f, s["r_load"], s["supply"]) if s["p_continuous"] is None else s["p_continuous"]
     a = (lm4651.p_switch(f, p, t_overmod=s["t_overmod"]) + lm4651.p_idle_4652(s["supply"]))
@@ -97,7 +160,22 @@ def heat(s: dict, f, theta_sa=None, bare=False):
 def efficiency(s: dict, f_nom, l_out):
     """Efficiency at p_out, typical parts at the nominal frequency: conduction with the Example Design's
     230 mOhm hot, eq 9/10 with the typical 310 ns, the idle loss and the coils (system table: 85 % at
-    125 W)."""
+    125 W).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    f_nom : float or numpy.ndarray
+        The nominal switching frequency, Hz (arrays broadcast).
+    l_out : float or numpy.ndarray
+        The filter inductors' L, H (for their copper loss at ``l_dcr``).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The efficiency at ``p_out``, a fraction.
+    """
     p = s["p_out"]
     loss = (lm4651.p_conduction(p, s["r_load"]) + lm4651.p_switch(f_nom, p) + lm4651.p_idle(s["supply"])
             + lm4651.coil_loss(p, s["r_load"], l_out, s["l_dcr"]))
@@ -106,7 +184,18 @@ def efficiency(s: dict, f_nom, l_out):
 
 def p_unclipped(s: dict) -> float:
     """The power that must not clip: p_out, or the THD+N test point if higher (above clipping THD+N is 1 %
-    or more by the datasheet's own definition of the clipping point, so a test point there is no test)."""
+    or more by the datasheet's own definition of the clipping point, so a test point there is no test).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    float
+        max(``p_out``, ``thd_test_power``), W.
+    """
     return max(s["p_out"], s["thd_test_power"])
 
 
@@ -114,7 +203,21 @@ def thermal(s: dict, f_slow, f_fast):
     """(theta_SA needed, T_j, dissipation, T_j with no heat sink), the last three at the hotter oscillator
     corner. The heat sink is the one given, else the one needed: the smaller need of the two corners,
     so the corner that sets it sits at 150 C - tj_margin and the other runs cooler; that corner's
-    dissipation is the one reported."""
+    dissipation is the one reported.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    f_slow, f_fast : float or numpy.ndarray
+        The oscillator's slow and fast corners, Hz (arrays broadcast).
+
+    Returns
+    -------
+    tuple
+        (theta_SA needed, K/W; T_j with the heat sink, C; the LM4652's dissipation, W; T_j with no heat sink,
+        C, the hotter corner's), each broadcast over the frequencies.
+    """
     need = np.minimum(heat(s, f_slow)[0], heat(s, f_fast)[0])
     sink = need if s["theta_sa_available"] is None else s["theta_sa_available"]
     (_, tj_s, p_s), (_, tj_f, p_f) = heat(s, f_slow, sink), heat(s, f_fast, sink)
@@ -124,7 +227,31 @@ def thermal(s: dict, f_slow, f_fast):
 
 
 def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
-    """Every figure and margin of candidates (arrays broadcast), each at its worst corner."""
+    """Every figure and margin of candidates (arrays broadcast), each at its worst corner.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_osc : float or numpy.ndarray
+        R_OSC of each candidate, ohm.
+    l_out : float or numpy.ndarray
+        The filter inductors' nominal L of each candidate, H.
+    c_out : float or numpy.ndarray
+        C_BYP, nominal, of each candidate, F.
+    r_dly : float or numpy.ndarray
+        R_DLY of each candidate, ohm.
+
+    Returns
+    -------
+    dict
+        Arrays, one entry per candidate: ``f_sw``, ``f_sw_min``, ``f_sw_max`` (nominal and corner frequencies,
+        Hz), ``thd_n`` (fraction), ``ripple`` (V rms), ``band_deviation`` (dB), ``q`` (pure number),
+        ``i_peak`` (A), ``p_clip`` (W, fast corner), ``theta_sa_required`` (K/W), ``t_junction`` and
+        ``t_junction_no_sink`` (C), ``p_dissipation`` (W), ``dead_time`` (s), ``efficiency`` (fraction);
+        ``margins`` {check of :data:`CHECKS`: margin, a fraction of its limit, negative where it fails} and
+        ``ok`` (bool: every margin holds).
+    """
     r_osc, l_out, c_out, r_dly = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
                                                         (r_osc, l_out, c_out, r_dly)))
     f_nom = lm4651.f_sw_for(r_osc, r_dly)
@@ -158,7 +285,21 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
 
 
 def at(fig: dict, index) -> dict:
-    """One candidate's figures as plain floats (margins included)."""
+    """One candidate's figures as plain floats (margins included).
+
+    Parameters
+    ----------
+    fig : dict
+        The figures of many candidates (:func:`figures`).
+    index : int
+        The candidate's index in those arrays.
+
+    Returns
+    -------
+    dict
+        The same keys with floats (SI units as in :func:`figures`), ``margins`` {check: float} and ``ok``
+        (bool).
+    """
     out = {k: float(v[index]) for k, v in fig.items() if k not in ("margins", "ok")}
     out["margins"] = {k: float(v[index]) for k, v in fig["margins"].items()}
     out["ok"] = bool(fig["ok"][index])
@@ -166,7 +307,26 @@ def at(fig: dict, index) -> dict:
 
 
 def one(s: dict, r_osc: float, l_out: float, c_out: float, r_dly: float) -> dict:
-    """The figures of one design as plain floats."""
+    """The figures of one design as plain floats.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_osc : float
+        R_OSC, ohm.
+    l_out : float
+        The filter inductors' nominal L, H.
+    c_out : float
+        C_BYP, nominal, F.
+    r_dly : float
+        R_DLY, ohm.
+
+    Returns
+    -------
+    dict
+        Its figures as :func:`at` gives them (SI units; ``margins`` {check: fraction}, ``ok`` bool).
+    """
     return at(figures(s, np.array([r_osc]), np.array([l_out]), np.array([c_out]), np.array([r_dly])), 0)
 
 
@@ -184,7 +344,27 @@ TYPICAL = {"osc_tol_slow": 0.0, "osc_tol_fast": 0.0, "l_tolerance": 0.0, "c_tole
 
 def sensitivity(s: dict, r_osc: float, l_out: float, c_out: float, r_dly: float) -> dict:
     """Margins with every tolerance at its typical value, then with each one alone at its limit, then all:
-    {case: {check: margin}}; the drop from the first row is what that tolerance eats."""
+    {case: {check: margin}}; the drop from the first row is what that tolerance eats.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_osc : float
+        R_OSC, ohm.
+    l_out : float
+        The filter inductors' nominal L, H.
+    c_out : float
+        C_BYP, nominal, F.
+    r_dly : float
+        R_DLY, ohm.
+
+    Returns
+    -------
+    dict
+        {case: {check: margin}}: the cases "typical (no tolerance)", each of :data:`TOLERANCES` alone, and
+        "all at their limits"; each margin a fraction of its check's limit (negative where it fails).
+    """
     cases = {"typical (no tolerance)": {**s, **TYPICAL}}
     for name, keys in TOLERANCES.items():
         cases[name] = {**s, **TYPICAL, **{k: s[k] for k in keys}}
@@ -193,7 +373,21 @@ def sensitivity(s: dict, r_osc: float, l_out: float, c_out: float, r_dly: float)
 
 
 def axes(s: dict, r_dly: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The series values searched: R_OSC whose two oscillator corners stay inside 50..225 kHz, L and C."""
+    """The series values searched: R_OSC whose two oscillator corners stay inside 50..225 kHz, L and C.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_dly : float
+        R_DLY, ohm (it shifts eq 5's frequency).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (R_OSC values in ohm, within :data:`R_OSC_RANGE`; L values in H, within :data:`L_RANGE`; C_BYP values
+        in F, within :data:`C_RANGE`), each sorted, from ``r_osc_series``, ``l_series`` and ``c_series``.
+    """
     r = np.array(series.values(s["r_osc_series"], *R_OSC_RANGE))
     f = lm4651.f_sw_for(r, r_dly)
     keep = (f > 0) & (f * (1 - s["osc_tol_slow"]) >= DEV["f_min"] * (1 - 1e-12)) & (
@@ -202,7 +396,26 @@ def axes(s: dict, r_dly: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def grid(s: dict, r_dly: float, f_win=None, l_win=None, c_win=None):
-    """Every combination of the series values (each optionally within a window) as flat candidate arrays."""
+    """Every combination of the series values (each optionally within a window) as flat candidate arrays.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_dly : float
+        R_DLY, ohm.
+    f_win : tuple of float or None
+        (low, high) nominal switching frequency, Hz: the R_OSC values kept; None: all of :func:`axes`.
+    l_win : tuple of float or None
+        (low, high) L, H; None: all.
+    c_win : tuple of float or None
+        (low, high) C_BYP, F; None: all.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (R_OSC in ohm, L in H, C_BYP in F), three flat arrays of equal length, one entry per combination.
+    """
     r, l_out, c_out = axes(s, r_dly)
     f = lm4651.f_sw_for(r, r_dly)
     pick = [np.ones(len(v), dtype=bool) if w is None else (x >= w[0]) & (x <= w[1])
@@ -213,7 +426,25 @@ def grid(s: dict, r_dly: float, f_win=None, l_win=None, c_win=None):
 
 def pair_keys(s: dict, r_osc, l_out, r_dly):
     """(objective, the other) of (R_OSC, L) pairs, larger better: neither depends on C_BYP. The efficiency
-    at p_out, and theta_SA needed at the worse oscillator corner (a larger one is a smaller heat sink)."""
+    at p_out, and theta_SA needed at the worse oscillator corner (a larger one is a smaller heat sink).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_osc : float or numpy.ndarray
+        R_OSC of each pair, ohm.
+    l_out : float or numpy.ndarray
+        L of each pair, H.
+    r_dly : float
+        R_DLY, ohm.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (the objective's key, the other key), each broadcast over the pairs: the efficiency (fraction) and
+        the theta_SA needed (K/W), in that order when ``objective`` is "efficiency", else swapped.
+    """
     f = lm4651.f_sw_for(r_osc, r_dly)
     eff = efficiency(s, f, l_out)
     theta = np.minimum(heat(s, f * (1 - s["osc_tol_slow"]))[0], heat(s, f * (1 + s["osc_tol_fast"]))[0])
@@ -222,7 +453,27 @@ def pair_keys(s: dict, r_osc, l_out, r_dly):
 
 
 def best(s: dict, r, l_out, c_out, r_dly):
-    """Index of the best feasible candidate (objective, then the other, then the smaller L and C), or None."""
+    """Index of the best feasible candidate (objective, then the other, then the smaller L and C), or None.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    r : numpy.ndarray
+        R_OSC of each candidate, ohm (a flat array).
+    l_out : numpy.ndarray
+        L of each candidate, H.
+    c_out : numpy.ndarray
+        C_BYP of each candidate, F.
+    r_dly : float
+        R_DLY, ohm.
+
+    Returns
+    -------
+    tuple
+        (index of the best candidate meeting every check, or None when none does; every candidate's
+        :func:`figures`).
+    """
     fig = figures(s, r, l_out, c_out, r_dly)
     ok = np.flatnonzero(fig["ok"])
     if not ok.size:

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import casadi as ca
@@ -34,7 +35,7 @@ import numpy as np
 
 from ...core import series
 from ...sources.lm4651 import circuit as lm4651
-from ..common import Result, completed, reported
+from ..common import Result, Table, completed, is_checked, reported
 from ..solvers import IPOPT_OPTIONS, Infeasible, Solution
 from . import model
 from .explain import binding_text, infeasible, warnings
@@ -74,13 +75,49 @@ class ClassDResult(Result):
     table = TABLE
 
 
-def checked(spec: dict | None) -> dict:
-    return completed(TABLE, spec)
+def checked(spec: Mapping | None) -> Table:
+    """The ``[class_d]`` table completed with its defaults, each value checked against the schema.
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The ``[class_d]`` table, {key: value} in SI units (temperatures in C): missing keys take their defaults,
+        None takes them all; a checked :class:`~handbook.design.common.Table` is taken as it is.
+
+    Returns
+    -------
+    Table
+        Every key of the table, checked (SI units; temperatures in C).
+
+    Raises
+    ------
+    InputError
+        When a key is unknown or a value is of the wrong type or out of range.
+    """
+    if is_checked(TABLE, spec):  # checked once, where it was read
+        return spec
+    return Table(TABLE, completed(TABLE, spec))
 
 
 def r_dly_for(s: dict) -> float:
     """Closed form: the smallest series R_DLY whose dead time 27 ns + 1.7 pF R_DLY meets dead_time_min (0 if
-    the 27 ns at R_DLY = 0 already does: pin 17 to ground)."""
+    the 27 ns at R_DLY = 0 already does: pin 17 to ground).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    float
+        R_DLY, ohm: the smallest ``r_dly_series`` value whose dead time is at least ``dead_time_min``, or 0.0.
+
+    Raises
+    ------
+    Infeasible
+        When ``dead_time_min`` needs more than 1 Mohm (``achievable``: ``dead_time_max``, s).
+    """
     need = (s["dead_time_min"] - lm4651.T_DEAD_0) / lm4651.C_DEAD
     if need <= 0:
         return 0.0
@@ -173,7 +210,20 @@ def _nlp(objective: str, above: bool):
 
 def solve(s: dict) -> list[Solution]:
     """IPOPT on the continuous problem: (f_sw, L, C) as reals, every constraint at every corner, on each side
-    of the analyser's band: both solutions, the better solved one first."""
+    of the analyser's band: both solutions, the better solved one first.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    list of Solution
+        Two solutions, one per side of the analyser's band (the one above it has an "analyser band"
+        constraint); solved ones first, then the lower objective. Each ``x`` is (f_sw in Hz, L in H, C_BYP in F,
+        theta_SA bound in K/W); the multipliers name the binding constraints.
+    """
     f_lo = DEV["f_min"] / (1 - s["osc_tol_slow"])
     f_hi = DEV["f_max"] / (1 + s["osc_tol_fast"])
     x0 = [math.sqrt(f_lo * max(f_hi, f_lo)) / F_S, 50e-6 / L_S, 5e-6 / C_S, 0.0]
@@ -196,6 +246,23 @@ def snap(s: dict, seeds, r_dly: float):
     whose objective is at least the incumbent's (both objectives are set by R_OSC and L alone) with every
     C_BYP: nothing outside that set can beat the incumbent, so the best inside it is the optimum. IPOPT only
     makes the set small. Returns (parts or None, their figures, the figures of the last set searched).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    seeds : iterable of sequence of float
+        IPOPT's optima, each starting (f_sw in Hz, L in H, C_BYP in F) (:attr:`Solution.x`).
+    r_dly : float
+        R_DLY, ohm (:func:`r_dly_for`).
+
+    Returns
+    -------
+    tuple
+        (parts: (R_OSC in ohm, L in H, C_BYP in F) of the best series design, or None when nothing in the
+        last set meets every check; its figures as plain floats (:func:`~handbook.design.class_d.model.at`), or
+        None; searched: (R_OSC, L, C_BYP) flat arrays of the last set searched and their
+        :func:`~handbook.design.class_d.model.figures`, None when that set was empty).
     """
     near = [grid(s, r_dly, *[(v / SPREAD, v * SPREAD) for v in x[:3]]) for x in seeds]
     r, l_out, c_out = (np.concatenate(a) for a in zip(*near))
@@ -216,7 +283,27 @@ def snap(s: dict, seeds, r_dly: float):
 
 
 def enumerate_series(s: dict):
-    """Exhaustive: the best (R_OSC, L, C_BYP, R_DLY) over the whole grid, or None (the chapter's check)."""
+    """Exhaustive: the best (R_OSC, L, C_BYP, R_DLY) over the whole grid, or None (the chapter's check).
+
+    Parameters
+    ----------
+    s : Mapping or None
+        The ``[class_d]`` table, {key: value} in SI units (checked here; a checked
+        :class:`~handbook.design.common.Table` is taken as it is).
+
+    Returns
+    -------
+    tuple of float or None
+        (R_OSC in ohm, L in H, C_BYP in F, R_DLY in ohm) of the best series design, or None when none meets every
+        check.
+
+    Raises
+    ------
+    InputError
+        When the spec is invalid.
+    Infeasible
+        When no series R_DLY gives ``dead_time_min``.
+    """
     s = checked(s)
     r_dly = r_dly_for(s)
     r, l_out, c_out = grid(s, r_dly)
@@ -225,7 +312,30 @@ def enumerate_series(s: dict):
 
 
 def design(spec: dict | None = None) -> ClassDResult:
-    """The joint design: IPOPT for (f_sw, L, C), snapped to the series and re-verified at every corner."""
+    """The joint design: IPOPT for (f_sw, L, C), snapped to the series and re-verified at every corner.
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The ``[class_d]`` table, {key: value} in SI units (temperatures in C): missing keys take their defaults,
+        None takes them all; a checked :class:`~handbook.design.common.Table` is taken as it is.
+
+    Returns
+    -------
+    ClassDResult
+        The checked spec; the switching frequency, nominal and at both oscillator corners (Hz); R_OSC and
+        R_DLY (ohm), L (H), C_BYP (F); efficiency and THD+N (fractions); the LM4652's dissipation and the
+        clipping power (W); the heat sink needed (K/W); T_j with it and with none (C); what binds; the
+        warnings; every figure and margin (``figures``); IPOPT's continuous (f_sw, L, C); the band (Hz, Hz).
+
+    Raises
+    ------
+    InputError
+        When the spec is invalid.
+    Infeasible
+        When no series design meets every check at every tolerance corner (``achievable``: what each failed
+        check can reach while the others hold), or no series R_DLY gives ``dead_time_min``.
+    """
     s = checked(spec)
     r_dly = r_dly_for(s)
     sols = solve(s)

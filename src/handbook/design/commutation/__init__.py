@@ -13,13 +13,45 @@ TABLE = "commutation"
 
 
 def explain(spec: dict | None = None):
-    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None."""
+    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None.
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[commutation]`` table, {key: value} in SI units (speeds in rpm); missing keys take their defaults,
+        None takes them all.
+
+    Returns
+    -------
+    Infeasible or None
+        The exception :func:`design` raises (its message, and ``achievable``: what can be met), not raised; None
+        when the spec can be met.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` itself is invalid (an unknown key, a value out of range, contradicting limits).
+    """
     return explained(design, spec)
 
 
 def sensitivity(result: CommutationResult) -> list[dict]:
     """Which tolerance eats most of the speed range of a designed CAP-CD, one row per group:
-    {"source", "share", "range_gain" (what pinning that group to the middle of its range gains), "cap_cd_bound"}."""
+    {"source", "share", "range_gain" (what pinning that group to the middle of its range gains), "cap_cd_bound"}.
+
+    Parameters
+    ----------
+    result : CommutationResult
+        A designed timing set (:func:`design`); its checked spec is what is varied.
+
+    Returns
+    -------
+    list of dict
+        One row per tolerance group ("capacitor tolerance", "charge current", "low level", "high level"):
+        ``source`` (str), ``share`` (the fraction of the log of the lost speed range that pinning this group
+        recovers), ``range_gain`` (the factor by which pinning it widens rpm_max_reliable / rpm_min_reliable) and
+        ``cap_cd_bound`` (the smallest continuous CAP-CD with it pinned, F).
+    """
     return [{"source": r["group"], **{k: v for k, v in r.items() if k != "group"}} for r in _sensitivity(result.spec)]
 
 

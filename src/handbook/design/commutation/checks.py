@@ -18,7 +18,23 @@ LEAK_FLOOR = 3e-6
 
 
 def capacitor_range(name: str, c: float, i_pin: float) -> list[str]:
-    """A capacitor outside what a timing pin is meant for."""
+    """A capacitor outside what a timing pin is meant for.
+
+    Parameters
+    ----------
+    name : str
+        The capacitor's name as the warning shows it ("CAP-CD", "CAP-ST", "CAP-TI").
+    c : float
+        Its value, F.
+    i_pin : float
+        The pin's smallest charge current, A (what an electrolytic's leakage would rival).
+
+    Returns
+    -------
+    list of str
+        Zero, one or two warnings: the stray capacitance (:data:`STRAY`) shifts the timing by more than 1 %, and
+        the value is beyond film and ceramic parts (above :data:`FILM_MAX`).
+    """
     out = []
     if STRAY / c > 0.01:
         out.append(f"{name} = {c * 1e12:.3g} pF: the pin and board stray capacitance (a few pF; {STRAY * 1e12:g} pF "
@@ -33,13 +49,44 @@ def capacitor_range(name: str, c: float, i_pin: float) -> list[str]:
 def ti_cycle(cap_ti: float, tol: float) -> float:
     """The least time CAP-TI's internal timing takes per commutation at its largest value: the step
     0.2 -> 0.3 V at 57 uA and the discharge back at 28 uA, with no watchdog ramp at all (AN94002 2.1.3).
-    A flyback adds its own length and a ramp to discharge, so the real cycle is longer."""
+    A flyback adds its own length and a ramp to discharge, so the real cycle is longer.
+
+    Parameters
+    ----------
+    cap_ti : float
+        CAP-TI, nominal, F.
+    tol : float
+        Its tolerance, a fraction (the cycle is taken at ``cap_ti (1 + tol)``).
+
+    Returns
+    -------
+    float
+        The least internal-timing time per commutation, s.
+    """
     c = cap_ti * (1 + tol)
     return c * V_TI_STEP / I_TI_FAST + c * V_TI_STEP / I_TI_DISCHARGE
 
 
 def speed_limits(s: dict, start, watchdog) -> list[str]:
-    """Speeds the IC cannot commutate with this timing set."""
+    """Speeds the IC cannot commutate with this timing set.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+    start : StartResult or None
+        The CAP-ST design (:func:`~handbook.design.commutation.timers.design_start`), None when there is none.
+    watchdog : WatchdogResult or None
+        The CAP-TI design (:func:`~handbook.design.commutation.timers.design_watchdog`), None when there is
+        none (the smallest allowed CAP-TI, 2000 pF, is then assumed).
+
+    Returns
+    -------
+    list of str
+        Zero to two warnings: the commutation interval at ``rpm_max`` is shorter than CAP-TI's internal timing
+        (:func:`ti_cycle`), and the shortest start period is not longer than the commutation interval at
+        ``rpm_min``.
+    """
     out = []
     n = s["pole_pairs"]
     fast, slow = an94002.t_com(s["rpm_max"], n), an94002.t_com(s["rpm_min"], n)
@@ -59,6 +106,25 @@ def speed_limits(s: dict, start, watchdog) -> list[str]:
 
 
 def warnings(s: dict, cap_cd: float, start, watchdog) -> list[str]:
+    """Every device warning of a timing set: each capacitor's range, then the speed limits.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+    cap_cd : float
+        The chosen CAP-CD, F.
+    start : StartResult or None
+        The CAP-ST design, None when there is none.
+    watchdog : WatchdogResult or None
+        The CAP-TI design, None when there is none.
+
+    Returns
+    -------
+    list of str
+        The warnings of :func:`capacitor_range` for CAP-CD, CAP-ST and CAP-TI (those designed), then those of
+        :func:`speed_limits`.
+    """
     out = capacitor_range("CAP-CD", cap_cd, s["i_charge_min"])
     if start is not None:
         out += capacitor_range("CAP-ST", start.cap_st, s["i_st_min"])

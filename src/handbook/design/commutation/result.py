@@ -16,11 +16,12 @@ device sanity warnings: :mod:`.checks`.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ...core import InputError, series
 from ...sources.an94002 import circuit as an94002
-from ..common import Result, completed, ordered, reported
+from ..common import Result, Table, completed, is_checked, ordered, reported
 from ..solvers import Infeasible
 from . import checks, timers
 
@@ -55,7 +56,29 @@ class CommutationResult(Result):
     table = TABLE
 
 
-def checked(spec: dict | None) -> dict:
+def checked(spec: Mapping | None) -> Table:
+    """The ``[commutation]`` table completed with its defaults and checked: ranges, then the limits that
+    contradict each other (ordered ranges, the noise floor inside the window, ``rpm_reverse`` without
+    ``flyback_time``, part of the motor data).
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The ``[commutation]`` table, {key: value} in SI units (speeds in rpm): missing keys take their defaults,
+        None takes them all; a checked :class:`~handbook.design.common.Table` is taken as it is.
+
+    Returns
+    -------
+    Table
+        Every key of the table, checked (SI units, speeds in rpm).
+
+    Raises
+    ------
+    InputError
+        When a key is unknown, a value is out of range, or two limits contradict each other.
+    """
+    if is_checked(TABLE, spec):  # checked once, where it was read
+        return spec
     s = completed(TABLE, spec)
     ordered(TABLE, "rpm_min", "rpm_max", s, "rpm")
     for low, high, unit in (("i_charge_min", "i_charge_max", "A"), ("v_low_min", "v_low_max", "V"),
@@ -72,11 +95,27 @@ def checked(spec: dict | None) -> dict:
         raise InputError(f"commutation.rpm_reverse = {s['rpm_reverse']:g} rpm bounds CAP-TI from above; give "
                          "commutation.flyback_time too (its lower bound), or leave rpm_reverse out")
     timers.motor_given(s)
-    return s
+    return Table(TABLE, s)
 
 
 def box(c: float, s: dict, levels: bool = True) -> dict:
-    """The tolerance box of one capacitor value: capacitance, charge current (and the two levels)."""
+    """The tolerance box of one capacitor value: capacitance, charge current (and the two levels).
+
+    Parameters
+    ----------
+    c : float
+        CAP-CD, nominal, F.
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+    levels : bool
+        Include the low and high switching levels.
+
+    Returns
+    -------
+    dict
+        {"cap": (low, high) in F, at +- ``tolerance``; "i": (``i_charge_min``, ``i_charge_max``) in A}, and with
+        ``levels`` "v_low" and "v_high": (smallest, largest) in V.
+    """
     out = {"cap": timers.spread(c, s["tolerance"]), "i": (s["i_charge_min"], s["i_charge_max"])}
     if levels:
         out.update(v_low=(s["v_low_min"], s["v_low_max"]), v_high=(s["v_high_min"], s["v_high_max"]))
@@ -85,7 +124,20 @@ def box(c: float, s: dict, levels: bool = True) -> dict:
 
 def bounds(s: dict) -> tuple[float, float]:
     """(smallest C meeting the window at rpm_min, largest C meeting the noise floor at rpm_max), in F:
-    the closed forms at the corners the monotonicity picks."""
+    the closed forms at the corners the monotonicity picks.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    tuple of float
+        (the smallest continuous CAP-CD whose swing at ``rpm_min`` fits the narrowest window, F; the largest
+        whose swing at ``rpm_max`` stays above ``min_excursion``, F). The spec can be met only if the first is
+        not above the second.
+    """
     n, tol = s["pole_pairs"], s["tolerance"]
     window = s["v_high_min"] - s["v_low_max"]
     c_low = s["i_charge_max"] * an94002.t_com(s["rpm_min"], n) / (window * (1 - tol))
@@ -95,7 +147,24 @@ def bounds(s: dict) -> tuple[float, float]:
 
 def verify(c: float, s: dict) -> dict:
     """One capacitor value at every corner (16 for the window, 4 for the noise floor): worst swings and
-    the speeds it covers."""
+    the speeds it covers.
+
+    Parameters
+    ----------
+    c : float
+        CAP-CD, nominal, F.
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    dict
+        ``swing_at_rpm_min`` (the swing at ``rpm_min`` at the corner where it most exceeds the window, V),
+        ``window_at_corner`` (that corner's window, V), ``window_corner`` (that corner: {"cap" F, "i" A,
+        "v_low" V, "v_high" V}), ``swing_at_rpm_max`` (the smallest swing at ``rpm_max``, V), ``window_ok`` and
+        ``noise_ok`` (bool: the window and the noise floor hold at every corner), ``rpm_min_reliable`` and
+        ``rpm_max_reliable`` (the speed range every corner covers, rpm).
+    """
     n, floor = s["pole_pairs"], s["min_excursion"]
     t_slow, t_fast = an94002.t_com(s["rpm_min"], n), an94002.t_com(s["rpm_max"], n)
     excess, corner = timers.worst(lambda cap, i, v_low, v_high: i * t_slow / cap - (v_high - v_low), box(c, s),
@@ -113,6 +182,24 @@ def verify(c: float, s: dict) -> dict:
 
 
 def infeasible(s: dict, chosen: float, check: dict) -> Infeasible:
+    """The Infeasible for a speed range no CAP-CD covers: what the smallest fitting value reaches, and the
+    speed ratio any capacitor can cover (it does not depend on the capacitor).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+    chosen : float
+        The smallest series CAP-CD that fits the window at ``rpm_min``, F.
+    check : dict
+        Its :func:`verify`; ``rpm_max_reliable`` (rpm) is read.
+
+    Returns
+    -------
+    Infeasible
+        The exception to raise (not raised here): ``achievable`` holds ``cap_cd`` (F), ``rpm_min`` and
+        ``rpm_max_reliable`` (rpm) and ``rpm_ratio_possible`` (the widest rpm_max / rpm_min, a pure number).
+    """
     c_probe = 1e-9  # the achievable speed ratio does not depend on the capacitor
     probe = verify(c_probe, s)
     return Infeasible(
@@ -125,7 +212,25 @@ def infeasible(s: dict, chosen: float, check: dict) -> Infeasible:
 
 
 def design_cap_cd(s: dict) -> dict:
-    """CAP-CD: closed-form bound -> smallest series value at or above it -> every corner re-checked."""
+    """CAP-CD: closed-form bound -> smallest series value at or above it -> every corner re-checked.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    dict
+        ``cap_cd`` (the chosen series value, F), ``bound`` (the continuous bound, F), ``check`` (its
+        :func:`verify`), ``below`` (the next smaller series value, F) and ``why`` (str: why that one fails).
+
+    Raises
+    ------
+    Infeasible
+        When no series value both fits the window at ``rpm_min`` and keeps the swing above the noise floor at
+        ``rpm_max`` (:func:`infeasible`).
+    """
     c_low, c_high = bounds(s)
     chosen = series.at_least(s["series"], c_low * (1 - 1e-12))
     check = verify(chosen, s)
@@ -142,7 +247,29 @@ def design_cap_cd(s: dict) -> dict:
 
 def design(spec: dict | None = None) -> CommutationResult:
     """The timing set: CAP-CD = CAP-DC always; CAP-ST with J, K_t and start_current; CAP-TI with
-    flyback_time. Each closed form, snapped, re-checked at every corner; device warnings attached."""
+    flyback_time. Each closed form, snapped, re-checked at every corner; device warnings attached.
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The ``[commutation]`` table, {key: value} in SI units (speeds in rpm): missing keys take their defaults,
+        None takes them all; a checked :class:`~handbook.design.common.Table` is taken as it is.
+
+    Returns
+    -------
+    CommutationResult
+        The checked spec; CAP-CD = CAP-DC, CAP-ST and CAP-TI (F; None where not designed); the reliable speed
+        range (rpm); the noise margin (fraction); what binds; the warnings; and the details (continuous bound
+        and next smaller value in F, swings in V, the binding corner, the start and watchdog designs).
+
+    Raises
+    ------
+    InputError
+        When the spec is invalid.
+    Infeasible
+        When no series CAP-CD covers the speed range, no CAP-ST settles within ``t_start_max``, or no CAP-TI
+        both outlasts the flyback and catches ``rpm_reverse``.
+    """
     s = checked(spec)
     cd = design_cap_cd(s)
     check = cd["check"]
@@ -161,7 +288,25 @@ def design(spec: dict | None = None) -> CommutationResult:
 
 
 def enumerate_series(spec: dict) -> float | None:
-    """Exhaustive check: the smallest value of the series (1 pF..1 mF) that passes :func:`verify`."""
+    """Exhaustive check: the smallest value of the series (1 pF..1 mF) that passes :func:`verify`.
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The ``[commutation]`` table, {key: value} in SI units (speeds in rpm): missing keys take their defaults,
+        None takes them all; a checked :class:`~handbook.design.common.Table` is taken as it is.
+
+    Returns
+    -------
+    float or None
+        The smallest series CAP-CD meeting both the window and the noise floor at every corner, F; None when
+        none does.
+
+    Raises
+    ------
+    InputError
+        When the spec is invalid.
+    """
     s = checked(spec)
     for v in series.values(s["series"], 1e-12, 1e-3):
         chk = verify(v, s)
@@ -176,6 +321,19 @@ def sensitivity(s: dict) -> list[dict]:
     For a capacitor at its bound the worst-case speed range rpm_max_reliable / rpm_min_reliable is
     (window_min / floor) (I_min / I_max) (1 - tol) / (1 + tol); a group's share is the part of the log of
     that loss (against every group pinned) that pinning it recovers.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    list of dict
+        One row per group ("capacitor tolerance", "charge current", "low level", "high level"): ``group``
+        (str), ``range_gain`` (the factor by which pinning it widens rpm_max_reliable / rpm_min_reliable),
+        ``share`` (the fraction of the log of the whole loss it recovers) and ``cap_cd_bound`` (the continuous
+        CAP-CD bound with it pinned, F).
     """
     mid = lambda lo, hi: (lo + hi) / 2  # noqa: E731
     groups = {"capacitor tolerance": {"tolerance": 0.0},

@@ -31,7 +31,20 @@ START_KEYS = ("inertia", "torque_constant", "start_current")
 
 
 def corners(f, ranges: dict) -> list[tuple[float, dict]]:
-    """f evaluated at every corner of the box ``ranges`` = {name: (low, high)}: [(value, corner)]."""
+    """f evaluated at every corner of the box ``ranges`` = {name: (low, high)}: [(value, corner)].
+
+    Parameters
+    ----------
+    f : callable
+        A function of keyword arguments, one per name of ``ranges``, returning a float.
+    ranges : dict
+        {argument name: (low, high)}, each end in the argument's own unit.
+
+    Returns
+    -------
+    list of tuple
+        2^k pairs (value, corner): ``f`` at the corner (in its own unit) and the corner as {name: value}.
+    """
     names = list(ranges)
     out = []
     for ends in itertools.product((0, 1), repeat=len(names)):
@@ -41,17 +54,63 @@ def corners(f, ranges: dict) -> list[tuple[float, dict]]:
 
 
 def worst(f, ranges: dict, largest: bool) -> tuple[float, dict]:
-    """The largest (or smallest) value of ``f`` over all corners, with its corner."""
+    """The largest (or smallest) value of ``f`` over all corners, with its corner.
+
+    Parameters
+    ----------
+    f : callable
+        A function of keyword arguments, one per name of ``ranges``, returning a float.
+    ranges : dict
+        {argument name: (low, high)}, each end in the argument's own unit.
+    largest : bool
+        True for the largest value, False for the smallest.
+
+    Returns
+    -------
+    tuple
+        (value, corner): the extreme value of ``f`` (its own unit) and the corner, {name: value}, where it
+        lies (the first such corner on a tie).
+    """
     pick = max if largest else min
     return pick(corners(f, ranges), key=lambda vc: vc[0])
 
 
 def spread(x: float, tol: float) -> tuple[float, float]:
+    """A nominal value's range at a symmetric tolerance.
+
+    Parameters
+    ----------
+    x : float
+        The nominal value, in any unit.
+    tol : float
+        The tolerance, a fraction.
+
+    Returns
+    -------
+    tuple of float
+        (x (1 - tol), x (1 + tol)), in the unit of ``x``.
+    """
     return x * (1 - tol), x * (1 + tol)
 
 
 def motor_given(s: dict) -> bool:
-    """True when J, K_t and the start current are all given; a part of them is an input error."""
+    """True when J, K_t and the start current are all given; a part of them is an input error.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    bool
+        True when ``inertia``, ``torque_constant`` and ``start_current`` are all given, False when none is.
+
+    Raises
+    ------
+    InputError
+        When some but not all of the three are given.
+    """
     given = [k for k in START_KEYS if s[k] is not None]
     if given and len(given) < len(START_KEYS):
         missing = [f"commutation.{k}" for k in START_KEYS if s[k] is None]
@@ -78,26 +137,93 @@ class StartResult:
 
 
 def rocking_box(s: dict) -> dict:
+    """The motor's tolerance box for the rocking frequency (eq 2): each motor figure at +- ``motor_tolerance``.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    dict
+        {"torque_constant": (low, high) in N m/A, "current": (low, high) start current in A, "inertia": (low,
+        high) in kg m^2}.
+    """
     t = s["motor_tolerance"]
     return {"torque_constant": spread(s["torque_constant"], t), "current": spread(s["start_current"], t),
             "inertia": spread(s["inertia"], t)}
 
 
 def f_osc(s: dict):
+    """Eq 2 as a function of the motor's figures, the pole pairs taken from ``s``.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    callable
+        ``f(torque_constant, current, inertia)`` (N m/A, A, kg m^2) -> the rotor's rocking frequency about a
+        detent, Hz.
+    """
     return lambda torque_constant, current, inertia: an94002.oscillation_frequency(
         torque_constant, current, s["pole_pairs"], inertia)
 
 
 def start_box(c: float, s: dict) -> dict:
+    """The tolerance box of one CAP-ST value: capacitance and charge current.
+
+    Parameters
+    ----------
+    c : float
+        CAP-ST, nominal, F.
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    dict
+        {"cap": (low, high) in F, at +- ``tolerance``; "i_cap": (``i_st_min``, ``i_st_max``) in A}.
+    """
     return {"cap": spread(c, s["tolerance"]), "i_cap": (s["i_st_min"], s["i_st_max"])}
 
 
 def start_period(s: dict):
+    """Eq 1 as a function of the capacitor and its current, the switching levels taken from ``s``.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    callable
+        ``f(cap, i_cap)`` (F, A) -> the start oscillator's period, s.
+    """
     return lambda cap, i_cap: an94002.start_period(cap, i_cap, s["v_st_low"], s["v_st_high"])
 
 
 def check_start(c: float, s: dict) -> dict:
-    """Every corner of one CAP-ST value: shortest and longest period against the rocking's decay."""
+    """Every corner of one CAP-ST value: shortest and longest period against the rocking's decay.
+
+    Parameters
+    ----------
+    c : float
+        CAP-ST, nominal, F.
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    dict
+        ``settle`` (the slowest rocking's decay to ``residual``, s), ``period_min`` and ``period_max`` (the start
+        period at its shortest and longest corner, s), ``settles`` (bool: the shortest period outlasts the
+        decay) and ``fast_enough`` (bool: the longest is within ``t_start_max``, or none is set).
+    """
     f_lo = worst(f_osc(s), rocking_box(s), largest=False)[0]
     settle = an94002.settle_time(f_lo, s["damping_ratio"], s["residual"])
     p_lo = worst(start_period(s), start_box(c, s), largest=False)[0]
@@ -107,7 +233,27 @@ def check_start(c: float, s: dict) -> dict:
 
 
 def design_start(s: dict) -> StartResult | None:
-    """Smallest series CAP-ST whose shortest period outlasts the slowest rocking's decay (closed form)."""
+    """Smallest series CAP-ST whose shortest period outlasts the slowest rocking's decay (closed form).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    StartResult or None
+        The chosen CAP-ST (F), its continuous bound (F), the rocking frequency range (Hz), the decay time and
+        the period range (s), the margin (fraction), the next smaller series value (F) and what binds; None when
+        no motor data is given.
+
+    Raises
+    ------
+    InputError
+        When only part of the motor data is given (:func:`motor_given`).
+    Infeasible
+        When the smallest series value that lets the rocking decay has a longest period above ``t_start_max``.
+    """
     if not motor_given(s):
         return None
     f_lo = worst(f_osc(s), rocking_box(s), largest=False)[0]
@@ -146,10 +292,42 @@ class WatchdogResult:
 
 
 def watchdog_time(s: dict):
+    """Eq 9 solved for the time, as a function of the capacitor and its current (ramp :data:`V_TI`).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+        Not read: the ramp's levels are the device's (:data:`V_TI`).
+
+    Returns
+    -------
+    callable
+        ``f(cap, i_wd)`` (F, A) -> the watchdog time, s.
+    """
     return lambda cap, i_wd: an94002.watchdog_time(cap, i_wd, *V_TI)
 
 
 def check_watchdog(c: float, s: dict) -> dict:
+    """Every corner of one CAP-TI value: shortest and longest watchdog time against the flyback and the
+    reverse-rotation limit.
+
+    Parameters
+    ----------
+    c : float
+        CAP-TI, nominal, F.
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+        ``flyback_time`` must be given.
+
+    Returns
+    -------
+    dict
+        ``t_wd_min`` and ``t_wd_max`` (the watchdog time at its shortest and longest corner, s), ``t_reverse``
+        (the time a rotor reversing at ``rpm_reverse`` takes for 150 electrical degrees, s; None when no
+        ``rpm_reverse``), ``long_enough`` (bool: the shortest outlasts the flyback and ``c`` is at least
+        :data:`CAP_TI_MIN`) and ``short_enough`` (bool: the longest is within ``t_reverse``, or there is none).
+    """
     box = {"cap": spread(c, s["tolerance"]), "i_wd": (s["i_wd_min"], s["i_wd_max"])}
     lo = worst(watchdog_time(s), box, largest=False)[0]
     hi = worst(watchdog_time(s), box, largest=True)[0]
@@ -160,7 +338,22 @@ def check_watchdog(c: float, s: dict) -> dict:
 
 
 def watchdog_score(c: float, s: dict) -> float:
-    """The smaller of the two ratios (flyback side, reverse side); the choice maximises it."""
+    """The smaller of the two ratios (flyback side, reverse side); the choice maximises it.
+
+    Parameters
+    ----------
+    c : float
+        CAP-TI, nominal, F.
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+        ``flyback_time`` must be given.
+
+    Returns
+    -------
+    float
+        min(t_wd_min / flyback_time, t_reverse / t_wd_max), a pure number (the second only with
+        ``rpm_reverse``); at least 1 where both limits hold.
+    """
     chk = check_watchdog(c, s)
     ratios = [chk["t_wd_min"] / s["flyback_time"]]
     if chk["t_reverse"] is not None:
@@ -170,7 +363,19 @@ def watchdog_score(c: float, s: dict) -> float:
 
 def cap_ti_choice(s: dict) -> float:
     """Closed form: the smallest C meeting the flyback; with a reverse limit the geometric middle of the
-    two bounds, snapped to whichever neighbouring series value has the larger smaller ratio."""
+    two bounds, snapped to whichever neighbouring series value has the larger smaller ratio.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+        ``flyback_time`` must be given.
+
+    Returns
+    -------
+    float
+        The chosen series CAP-TI, F (at least :data:`CAP_TI_MIN`); not yet checked against the limits.
+    """
     dv = V_TI[1] - V_TI[0]
     low = s["flyback_time"] * s["i_wd_max"] / (dv * (1 - s["tolerance"]))
     if s["rpm_reverse"] is None:
@@ -184,6 +389,26 @@ def cap_ti_choice(s: dict) -> float:
 
 
 def design_watchdog(s: dict) -> WatchdogResult | None:
+    """CAP-TI from the flyback time (and the reverse speed, if given), checked at every corner.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[commutation]`` table (SI units, speeds in rpm).
+
+    Returns
+    -------
+    WatchdogResult or None
+        The chosen CAP-TI (F), its watchdog time range and the reverse limit (s), the fastest reverse rotation
+        caught (rpm), the margins on either side (fractions; the reverse one None without ``rpm_reverse``) and
+        what binds; None when no ``flyback_time`` is given.
+
+    Raises
+    ------
+    Infeasible
+        When no series value both outlasts the flyback (and is at least 2000 pF) and catches reverse rotation
+        at ``rpm_reverse``.
+    """
     if s["flyback_time"] is None:
         return None
     chosen = cap_ti_choice(s)

@@ -15,18 +15,72 @@ TOLERANCES = ("r1_tolerance", "a_l_tolerance")
 
 def enumerate(spec: dict | None = None):
     """Exhaustive: every candidate coil wound for ``spec`` and the smallest that meets it (or None):
-    (operating point, every candidate, chosen)."""
+    (operating point, every candidate, chosen).
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[converter]`` table, {key: value} in SI units (temperatures in C); missing keys take their
+        defaults, None takes them all.
+
+    Returns
+    -------
+    tuple
+        (the operating point, a dict as :func:`~handbook.design.converter.result.operating_point` gives it;
+        every candidate :class:`~handbook.design.converter.coil.Coil`, smallest effective volume first; the
+        first that meets every limit, or None).
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is invalid.
+    """
     return choose(checked(spec))
 
 
 def explain(spec: dict | None = None):
-    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None."""
+    """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None.
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[converter]`` table, {key: value} in SI units (temperatures in C); missing keys take their
+        defaults, None takes them all.
+
+    Returns
+    -------
+    Infeasible or None
+        The exception :func:`design` raises (its message, and ``achievable``: a lower ``i_out`` (A) or a higher
+        ``f_min`` (Hz) that works, the largest core and why it fails), not raised; None when the spec can be met.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` itself is invalid.
+    """
     return explained(design, spec)
 
 
 def sensitivity(result: ConverterResult) -> list[dict]:
     """What each tolerance costs: the design repeated with it at zero, one row per tolerance:
-    {"source", "core" (the chosen core then), "ve" (its volume, m^3), "ve_saved" (fraction of the volume saved)}."""
+    {"source", "core" (the chosen core then), "ve" (its volume, m^3), "ve_saved" (fraction of the volume saved)}.
+
+    Parameters
+    ----------
+    result : ConverterResult
+        A design (:func:`design`): its checked spec is designed again with each of :data:`TOLERANCES` at zero.
+
+    Returns
+    -------
+    list of dict
+        One row per tolerance of :data:`TOLERANCES`: ``source`` (the key, str), ``core`` (shape and material,
+        str), ``ve`` (the core's effective volume, m^3) and ``ve_saved`` (a fraction of ``result``'s core volume).
+
+    Raises
+    ------
+    Infeasible
+        When the spec with a tolerance at zero cannot be met (it can, whenever ``result``'s could).
+    """
     rows = []
     for key in TOLERANCES:
         tight = design({**result.spec, key: 0.0})

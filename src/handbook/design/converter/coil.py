@@ -56,18 +56,60 @@ class Coil:
 
 
 def v_top(s: dict) -> float:
-    """The VCC2 at which the dump voltage V_L+ vanishes (eq 1): above it the converter need not switch."""
+    """The VCC2 at which the dump voltage V_L+ vanishes (eq 1): above it the converter need not switch.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    float
+        ``v_out`` + ``v_regulator_drop`` + ``v_f``, V.
+    """
     return s["v_out"] + s["v_regulator_drop"] + s["v_f"]
 
 
 def coil_voltages(s: dict, vcc: float) -> tuple[float, float]:
-    """Eq 1 and 2 at supply ``vcc``: (V_L+, V_L-)."""
+    """Eq 1 and 2 at supply ``vcc``: (V_L+, V_L-).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    vcc : float
+        The supply VCC2, V.
+
+    Returns
+    -------
+    tuple of float
+        (V_L+, the voltage the coil dumps against; V_L-, the voltage that charges it), V; V_L+ is zero or
+        negative at and above :func:`v_top`.
+    """
     return v_top(s) - vcc, vcc - s["v_ce_sat"] - s["v12h"]
 
 
 def frequency(s: dict, vcc: float, inductance: float, i_peak: float) -> float:
     """The full-load switching frequency 1/(t1 + t2) = 1/(L I_peak (1/V_L- + 1/V_L+)) at supply ``vcc``
-    (0 where V_L+ has vanished: the dump never ends)."""
+    (0 where V_L+ has vanished: the dump never ends).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    vcc : float
+        The supply VCC2, V.
+    inductance : float
+        The coil's inductance, H.
+    i_peak : float
+        The peak coil current, A.
+
+    Returns
+    -------
+    float
+        The switching frequency at full load, Hz (0.0 at and above :func:`v_top`).
+    """
     vl_plus, vl_minus = coil_voltages(s, vcc)
     if vl_plus <= 0:
         return 0.0
@@ -75,14 +117,42 @@ def frequency(s: dict, vcc: float, inductance: float, i_peak: float) -> float:
 
 
 def supplies(s: dict, n: int = SUPPLY_POINTS) -> list[float]:
-    """VCC2 from v_supply_min to v_supply_max (stopping just short of where V_L+ vanishes)."""
+    """VCC2 from v_supply_min to v_supply_max (stopping just short of where V_L+ vanishes).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    n : int
+        The number of points (at least 2 when the range is not a single point).
+
+    Returns
+    -------
+    list of float
+        ``n`` supply voltages evenly spaced, V, from ``v_supply_min`` to the smaller of ``v_supply_max`` and just
+        below :func:`v_top`; the single ``[v_supply_min]`` when that range is empty.
+    """
     lo, hi = s["v_supply_min"], min(s["v_supply_max"], v_top(s) * (1 - 1e-6))
     hi = max(hi, lo)
     return [lo + (hi - lo) * k / (n - 1) for k in range(n)] if hi > lo else [lo]
 
 
 def steinmetz_range(material: dict, f: float) -> tuple[dict, bool]:
-    """The Steinmetz range that covers f (else the nearest one) and whether f lies inside its span."""
+    """The Steinmetz range that covers f (else the nearest one) and whether f lies inside its span.
+
+    Parameters
+    ----------
+    material : dict
+        One material's row of :func:`~handbook.design.converter.cores.load` (saturation in T, Steinmetz ranges).
+    f : float
+        The frequency, Hz.
+
+    Returns
+    -------
+    tuple
+        (the range, a dict of ``f_low`` and ``f_high`` (Hz), ``k``, ``alpha``, ``beta``, ``ct0``, ``ct1``,
+        ``ct2``; True when ``f`` lies in its span, False when the nearest range is extrapolated).
+    """
     ranges = material["steinmetz"]
     for r in ranges:
         if r["f_low"] <= f <= r["f_high"]:
@@ -95,7 +165,24 @@ def igse_density(material: dict, delta_b: float, f: float, duty: float) -> float
     fraction ``duty``: the improved generalised Steinmetz equation (Venkatachalam et al., 2002)
     P_v = k_i delta_b^beta f^alpha (D^(1-alpha) + (1-D)^(1-alpha)),
     k_i = k / ((2 pi)^(alpha-1) 2^(beta-alpha) int_0^2pi |cos t|^alpha dt), with the temperature factor
-    ct0 - ct1 T + ct2 T^2 at :data:`T_LOSS`."""
+    ct0 - ct1 T + ct2 T^2 at :data:`T_LOSS`.
+
+    Parameters
+    ----------
+    material : dict
+        One material's row of :func:`~handbook.design.converter.cores.load` (saturation in T, Steinmetz ranges).
+    delta_b : float
+        The flux density's swing, peak to peak, T.
+    f : float
+        The switching frequency, Hz.
+    duty : float
+        The rising part of the period, a fraction (0 < duty < 1).
+
+    Returns
+    -------
+    float
+        The core loss per volume, W/m^3.
+    """
     r, _ = steinmetz_range(material, f)
     a, b = r["alpha"], r["beta"]
     cos_integral = 2 * math.sqrt(math.pi) * math.gamma((a + 1) / 2) / math.gamma(a / 2 + 1)
@@ -107,18 +194,60 @@ def igse_density(material: dict, delta_b: float, f: float, duty: float) -> float
 def b_sat(material: dict, temperature: float) -> float:
     """The material's saturation flux density at ``temperature`` (C): linear through its 25 C and 100 C
     figures (PyOpenMagnetics gives those two), extended beyond them (never below 1 mT: far above the Curie
-    temperature the figure means only "saturated")."""
+    temperature the figure means only "saturated").
+
+    Parameters
+    ----------
+    material : dict
+        One material's row of :func:`~handbook.design.converter.cores.load` (saturation in T, Steinmetz ranges).
+    temperature : float
+        The core's temperature, C.
+
+    Returns
+    -------
+    float
+        The saturation flux density, T (at least 1e-3).
+    """
     t0, t1 = cores.T_ROOM, cores.T_HOT
     b0, b1 = material["b_sat_room"], material["b_sat_hot"]
     return max(b0 + (b1 - b0) * (temperature - t0) / (t1 - t0), 1e-3)
 
 
 def core_reluctance(shape: dict, material: dict) -> float:
+    """The ungapped core's reluctance, l_e / (mu0 mu_i A_e).
+
+    Parameters
+    ----------
+    shape : dict
+        One core shape's row of :func:`~handbook.design.converter.cores.load` (areas m^2, lengths m, volume m^3,
+        gap table in m and A/Wb).
+    material : dict
+        One material's row of :func:`~handbook.design.converter.cores.load` (saturation in T, Steinmetz ranges).
+
+    Returns
+    -------
+    float
+        The reluctance, A/Wb (1/H).
+    """
     return shape["le"] / (MU0 * material["mu_i"] * shape["ae"])
 
 
 def gap_reluctance(shape: dict, gap: float) -> float:
-    """PyOpenMagnetics' reluctance of the gaps with a centre gap ``gap`` (log-log interpolation of the table)."""
+    """PyOpenMagnetics' reluctance of the gaps with a centre gap ``gap`` (log-log interpolation of the table).
+
+    Parameters
+    ----------
+    shape : dict
+        One core shape's row of :func:`~handbook.design.converter.cores.load` (areas m^2, lengths m, volume m^3,
+        gap table in m and A/Wb).
+    gap : float
+        The centre gap's length, m (outside the table, the end segment is extrapolated).
+
+    Returns
+    -------
+    float
+        The reluctance of all the core's gaps, A/Wb (1/H).
+    """
     xs, ys = shape["gap_lengths"], shape["gap_reluctance"]
     k = min(max(1, next((i for i, x in enumerate(xs) if x >= gap), len(xs) - 1)), len(xs) - 1)
     w = math.log(gap / xs[k - 1]) / math.log(xs[k] / xs[k - 1])
@@ -126,7 +255,22 @@ def gap_reluctance(shape: dict, gap: float) -> float:
 
 
 def gap_for(shape: dict, reluctance: float) -> float | None:
-    """The centre gap whose gaps' reluctance is ``reluctance`` (the table inverted), None beyond the table."""
+    """The centre gap whose gaps' reluctance is ``reluctance`` (the table inverted), None beyond the table.
+
+    Parameters
+    ----------
+    shape : dict
+        One core shape's row of :func:`~handbook.design.converter.cores.load` (areas m^2, lengths m, volume m^3,
+        gap table in m and A/Wb).
+    reluctance : float
+        The gaps' reluctance wanted, A/Wb (positive).
+
+    Returns
+    -------
+    float or None
+        The centre gap's length, m (below the table's shortest gap, extrapolated); None above the table's
+        largest reluctance.
+    """
     xs, ys = shape["gap_lengths"], shape["gap_reluctance"]
     if reluctance > ys[-1]:
         return None
@@ -137,7 +281,29 @@ def gap_for(shape: dict, reluctance: float) -> float | None:
 
 def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tuple[float, list[float]]:
     """The iGSE core loss (W) at the largest flux swing (L_max, I_peak,max), the largest over the supply range
-    at full load, and the frequencies it was evaluated at."""
+    at full load, and the frequencies it was evaluated at.
+
+    Parameters
+    ----------
+    material : dict
+        One material's row of :func:`~handbook.design.converter.cores.load` (saturation in T, Steinmetz ranges).
+    shape : dict
+        One core shape's row of :func:`~handbook.design.converter.cores.load` (areas m^2, lengths m, volume m^3,
+        gap table in m and A/Wb).
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    op : dict
+        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_max`` (H) and
+        ``i_peak_max`` (A) are read.
+    turns : int
+        The coil's turns.
+
+    Returns
+    -------
+    tuple
+        (the core loss, W, the largest over nine supply points; the full-load frequencies it was evaluated at,
+        Hz, a list: the supply points where the converter switches).
+    """
     delta_b = op["l1_max"] * op["i_peak_max"] / (turns * shape["ae"])
     worst, freqs = 0.0, []
     for v in supplies(s, 9):
@@ -152,7 +318,31 @@ def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tup
 
 
 def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | None = None) -> Coil:
-    """One candidate core, wound and costed (see the module's description)."""
+    """One candidate core, wound and costed (see the module's description).
+
+    Parameters
+    ----------
+    shape_name : str
+        The core shape's name, a key of the table's ``shapes`` (e.g. "RM 8").
+    material_name : str
+        The material's name, a key of the table's ``materials`` ("3C90", "N87").
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    op : dict
+        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_nominal`` and
+        ``l1_max`` (H), ``i_peak_max`` and ``i_rms`` (A) are read.
+    table : dict or None
+        The cores table (:func:`~handbook.design.converter.cores.load`); None: the shipped one.
+
+    Returns
+    -------
+    Coil
+        The core, material and effective volume (m^3); turns; centre gap (m, None beyond the table); A_L (H);
+        peak flux densities over the centre column and the narrowest section (T); saturation flux density (T)
+        and the margin left (fraction); the wire (name, copper diameter m), current density (A/m^2), R_dc
+        (ohm), core and winding losses (W) and temperature rise (K), these None when no wire fits; ``fails``
+        (why it fails, "" when it meets every limit) and ``limits`` (the limits it fails).
+    """
     table = table or cores.load()
     shape, material = table["shapes"][shape_name], table["materials"][material_name]
     l_nom, flux_n = op["l1_nominal"], op["l1_max"] * op["i_peak_max"]  # flux_n = N x peak flux
@@ -173,7 +363,33 @@ def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | N
 
 
 def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: dict | None = None) -> Coil:
-    """The candidate wound with ``n`` turns: gap, flux, wire, losses, rise, and the limits it fails."""
+    """The candidate wound with ``n`` turns: gap, flux, wire, losses, rise, and the limits it fails.
+
+    Parameters
+    ----------
+    shape_name : str
+        The core shape's name, a key of the table's ``shapes`` (e.g. "RM 8").
+    material_name : str
+        The material's name, a key of the table's ``materials`` ("3C90", "N87").
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    op : dict
+        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_nominal`` and
+        ``l1_max`` (H), ``i_peak_max`` and ``i_rms`` (A) are read.
+    n : int
+        The turns.
+    table : dict or None
+        The cores table (:func:`~handbook.design.converter.cores.load`); None: the shipped one.
+
+    Returns
+    -------
+    Coil
+        The core, material and effective volume (m^3); turns; centre gap (m, None beyond the table); A_L (H);
+        peak flux densities over the centre column and the narrowest section (T); saturation flux density (T)
+        and the margin left (fraction); the wire (name, copper diameter m), current density (A/m^2), R_dc
+        (ohm), core and winding losses (W) and temperature rise (K), these None when no wire fits; ``fails``
+        (why it fails, "" when it meets every limit) and ``limits`` (the limits it fails).
+    """
     table = table or cores.load()
     shape, material = table["shapes"][shape_name], table["materials"][material_name]
     r_core = core_reluctance(shape, material)
@@ -218,7 +434,22 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
 
 
 def candidates(s: dict, op: dict) -> list[Coil]:
-    """Every candidate core wound for this spec, smallest effective volume first (ties: least loss)."""
+    """Every candidate core wound for this spec, smallest effective volume first (ties: least loss).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    op : dict
+        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_nominal`` and
+        ``l1_max`` (H), ``i_peak_max`` and ``i_rms`` (A) are read.
+
+    Returns
+    -------
+    list of Coil
+        One :func:`coil` per shape and material of the shipped table, sorted by effective volume, then (among
+        those that meet every limit) total loss, then shape and material names.
+    """
     table = cores.load()
     out = [coil(sh, m, s, op, table) for sh in table["shapes"] for m in table["materials"]]
     return sorted(out, key=lambda c: (c.ve, c.loss if c.ok else math.inf, c.shape, c.material))

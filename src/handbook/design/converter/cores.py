@@ -62,7 +62,22 @@ def _core(pom, name: str, gap: float | None = None) -> dict:
 
 def gap_reluctance(pom, name: str, gap: float) -> float:
     """PyOpenMagnetics' reluctance of every gap of the core with a centre gap ground to ``gap`` (A/Wb):
-    the centre gap in series with the outer legs' residual gaps, those in parallel (Zhang's model)."""
+    the centre gap in series with the outer legs' residual gaps, those in parallel (Zhang's model).
+
+    Parameters
+    ----------
+    pom : module
+        The PyOpenMagnetics module.
+    name : str
+        The core shape's name in its database (e.g. "RM 8").
+    gap : float
+        The centre gap's length, m.
+
+    Returns
+    -------
+    float
+        The reluctance of all the core's gaps, A/Wb (1/H).
+    """
     gaps = _core(pom, name, gap)["functionalDescription"]["gapping"]
     centre = sum(pom.calculate_gap_reluctance(g, GAP_MODEL)["reluctance"] for g in gaps if g["type"] != "residual")
     legs = [pom.calculate_gap_reluctance(g, GAP_MODEL)["reluctance"] for g in gaps if g["type"] == "residual"]
@@ -128,7 +143,24 @@ def _wire_rows(pom) -> list[dict]:
 
 
 def build(shapes=SHAPES, materials=MATERIALS, wires: bool = True) -> dict:
-    """The table, read from PyOpenMagnetics' database (needs the PyOpenMagnetics package: a few seconds)."""
+    """The table, read from PyOpenMagnetics' database (needs the PyOpenMagnetics package: a few seconds).
+
+    Parameters
+    ----------
+    shapes : sequence of str
+        The core shapes to read (names in PyOpenMagnetics' database).
+    materials : sequence of str
+        The core materials to read.
+    wires : bool
+        Read the wires too (False: the table has no ``wires``).
+
+    Returns
+    -------
+    dict
+        ``source`` (str: PyOpenMagnetics' version), ``shapes`` {name: row}, ``materials`` {name: row} and
+        ``wires`` (a list of rows, thinnest first), in SI units as the module's description lists them (m, m^2,
+        m^3, A/Wb, K/W, T, ohm/m; Steinmetz coefficients for W/m^3 with f in Hz and B in T).
+    """
     from importlib.metadata import version
 
     import PyOpenMagnetics as pom
@@ -143,11 +175,25 @@ def build(shapes=SHAPES, materials=MATERIALS, wires: bool = True) -> dict:
 
 @functools.cache
 def load() -> dict:
-    """The shipped table (read once, as package data: it works from an installed wheel too)."""
+    """The shipped table (read once, as package data: it works from an installed wheel too).
+
+    Returns
+    -------
+    dict
+        The table as :func:`build` makes it (``source``, ``shapes``, ``materials``, ``wires``), cached: the same
+        object on every call, not to be modified.
+    """
     return json.loads(resources.files(__package__).joinpath(RESOURCE).read_text(encoding="utf-8"))
 
 
 def write(path: Path = PATH) -> None:
+    """Rebuild the table from PyOpenMagnetics (:func:`build`) and write it as JSON.
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file to write (default: the shipped ``cores.json`` of a source tree).
+    """
     path.write_text(json.dumps(build(), indent=1, sort_keys=True) + "\n")
 
 

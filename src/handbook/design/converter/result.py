@@ -42,13 +42,14 @@ f_min: a smaller L1 and core, more core loss per volume) is shown as a sweep ove
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ...core import InputError
 from ...core import series as eseries
 from ...sources.tca5600 import circuit as tca5600
 from ...sources.tca5600 import data as tca5600_data
-from ..common import Result, completed, ordered, reported
+from ..common import Result, Table, completed, is_checked, ordered, reported
 from ..solvers import Infeasible
 from . import cores
 from .coil import (  # noqa: F401 (the coil's names are this module's too)
@@ -131,12 +132,46 @@ class ConverterResult(Result):
 
 
 def source_params(s: dict) -> dict:
-    """The spec in the source functions' names (handbook.sources.tca5600.circuit)."""
+    """The spec in the source functions' names (handbook.sources.tca5600.circuit).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    dict
+        ``v_cc2_min``, ``v_out2``, ``regulator_drop``, ``v_f``, ``vce_sat``, ``v12h`` (V), ``i_out2`` (A) and
+        ``f_min`` (Hz), from ``v_supply_min``, ``v_out``, ``v_regulator_drop``, ``v_f``, ``v_ce_sat``, ``v12h``,
+        ``i_out`` and ``f_min``.
+    """
     return {"v_cc2_min": s["v_supply_min"], "v_out2": s["v_out"], "i_out2": s["i_out"], "f_min": s["f_min"],
             "regulator_drop": s["v_regulator_drop"], "v_f": s["v_f"], "vce_sat": s["v_ce_sat"], "v12h": s["v12h"]}
 
 
-def checked(spec: dict | None) -> dict:
+def checked(spec: Mapping | None) -> Table:
+    """The ``[converter]`` table completed with its defaults and checked: ranges, then the limits that
+    contradict each other (V_L+ and V_L- must be positive at ``v_supply_min``, the supply range ordered).
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The ``[converter]`` table, {key: value} in SI units (temperatures in C): missing keys take their
+        defaults, None takes them all; a checked :class:`~handbook.design.common.Table` is taken as it is.
+
+    Returns
+    -------
+    Table
+        Every key of the table, checked (SI units; temperatures in C).
+
+    Raises
+    ------
+    InputError
+        When a key is unknown, a value is out of range, or two limits contradict each other.
+    """
+    if is_checked(TABLE, spec):  # checked once, where it was read
+        return spec
     s = completed(TABLE, spec)
     above = s["v_supply_min"] - s["v_regulator_drop"] - s["v_f"]
     if s["v_out"] <= above:
@@ -147,13 +182,28 @@ def checked(spec: dict | None) -> dict:
         raise InputError(f"converter.v_supply_min = {s['v_supply_min']:g} V must be above v_ce_sat + v12h = "
                          f"{drops:g} V: the coil needs a voltage to charge (eq 2, V_L- > 0)")
     ordered(TABLE, "v_supply_min", "v_supply_max", s, "V", strict=False)
-    return s
+    return Table(TABLE, s)
 
 
 def operating_point(s: dict) -> dict:
     """Eq 1 to 6a (the source's functions), R1 fitted from its series, the peak currents at R1's tolerance,
     the inductance to wind (A_L's tolerance), the frequency range over the supply, and the triangle's rms
-    current at the highest peak current, I_peak,max / sqrt(3)."""
+    current at the highest peak current, I_peak,max / sqrt(3).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    dict
+        The source's eq 1 to 6a (``vl_plus``, ``vl_minus`` in V, ``alpha`` a pure number, ``t1``, ``t2`` in s,
+        ``i_peak`` in A, ``l1`` in H, ``r1`` in ohm) and ``r1_part`` (the series R1, ohm), ``i_peak_min`` and
+        ``i_peak_max`` (A, R1 at its high and low end), ``l1_max``, ``l1_nominal``, ``l1_min`` (H, A_L at +, 0
+        and - its tolerance), ``f_sw_min`` and ``f_sw_max`` (the full-load frequency's extremes over the supply
+        range and the corners, Hz), ``i_rms`` (A) and ``duty`` (t1 f_min, a fraction).
+    """
     op = tca5600.design(source_params(s))
     tol_r, tol_l = s["r1_tolerance"], s["a_l_tolerance"]
     r1_part = eseries.at_most(s["r1_series"], op["r1"] / (1 + tol_r))
@@ -172,6 +222,19 @@ def operating_point(s: dict) -> dict:
 
 
 def choose(s: dict) -> tuple[dict, list[Coil], Coil | None]:
+    """The operating point, every candidate coil, and the choice: the first candidate that meets every limit.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+
+    Returns
+    -------
+    tuple
+        (the operating point, :func:`operating_point`; every candidate :class:`~.coil.Coil`, smallest effective
+        volume first; the chosen one, or None when none meets every limit).
+    """
     op = operating_point(s)
     every = candidates(s, op)
     return op, every, next((c for c in every if c.ok), None)
@@ -225,7 +288,24 @@ def _to_figures(x: float, rounding, figures: int = 4) -> float:
 
 def infeasible(s: dict, every: list[Coil]) -> Infeasible:
     """Nothing in the candidate set meets the spec: what would (a lower current, a higher frequency),
-    and which candidate comes nearest (the way to a larger core family)."""
+    and which candidate comes nearest (the way to a larger core family).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    every : list of Coil
+        Every candidate (none meets the spec).
+
+    Returns
+    -------
+    Infeasible
+        The exception to raise (not raised here): ``achievable`` holds ``i_out`` (the largest load current some
+        candidate meets at this f_min, A, rounded down to four figures; None below 1 uA), ``f_min`` (the lowest
+        frequency some candidate meets at this load, Hz, rounded up; None when none up to the schema's highest
+        f_min does),
+        ``largest_core`` (str) and ``largest_core_fails`` (str).
+    """
     from ...core.units import eng
 
     i_ok = _current_that_works(s)
@@ -249,7 +329,21 @@ def infeasible(s: dict, every: list[Coil]) -> Infeasible:
 
 
 def binding(every: list[Coil], chosen: Coil) -> str:
-    """The limit that rules out the next smaller core (the one just below the choice)."""
+    """The limit that rules out the next smaller core (the one just below the choice).
+
+    Parameters
+    ----------
+    every : list of Coil
+        Every candidate, smallest effective volume first.
+    chosen : Coil
+        The chosen candidate.
+
+    Returns
+    -------
+    str
+        The limits the candidates of the next smaller volume fail, with each one's reason; or "none: the smallest
+        candidate core passes".
+    """
     smaller = [c for c in every if c.ve < chosen.ve * (1 - 1e-9)]
     if not smaller:
         return "none: the smallest candidate core passes"
@@ -261,7 +355,21 @@ def binding(every: list[Coil], chosen: Coil) -> str:
 
 
 def audio_band(s: dict, op: dict) -> tuple[float, float] | None:
-    """The VCC2 span over which the full-load frequency at the slow corner lies below :data:`AUDIO_BAND`."""
+    """The VCC2 span over which the full-load frequency at the slow corner lies below :data:`AUDIO_BAND`.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    op : dict
+        The operating point (:func:`operating_point`): ``l1_max`` (H) and ``i_peak_max`` (A) are read.
+
+    Returns
+    -------
+    tuple of float or None
+        (lowest, highest) VCC2 of the 401 supply points in the band (and ``v_supply_max`` when it reaches
+        :func:`~.coil.v_top`, where the frequency is zero), V; None when no point is.
+    """
     points = [v for v in supplies(s, 401) if frequency(s, v, op["l1_max"], op["i_peak_max"]) < AUDIO_BAND]
     if s["v_supply_max"] >= v_top(s):
         points.append(s["v_supply_max"])
@@ -269,6 +377,26 @@ def audio_band(s: dict, op: dict) -> tuple[float, float] | None:
 
 
 def warnings(s: dict, op: dict, c: Coil) -> list[str]:
+    """What a valid design does that is implausible or outside the models: each warning says its threshold.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (SI units; temperatures in C).
+    op : dict
+        The operating point (:func:`operating_point`).
+    c : Coil
+        The chosen coil.
+
+    Returns
+    -------
+    list of str
+        The warnings, possibly none: V_L+ vanishing below ``v_supply_max``; a full-load frequency in the audio
+        band; core loss extrapolated outside the Steinmetz fit; wire thicker than twice the skin depth; current
+        density above ``current_density_max``; a peak current above the assumed switch limit
+        (:data:`SWITCH_I_MAX`); more than :data:`TURNS_WARN` turns or a self-resonance below ten times the
+        highest switching frequency.
+    """
     from ...core.units import eng
 
     table = cores.load()
@@ -318,7 +446,30 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
 
 def design(spec: dict | None = None) -> ConverterResult:
     """Eq 1 to 6a, then the smallest candidate core meeting the saturation margin, the bobbin and the
-    temperature rise (exact enumeration). Raises Infeasible when no candidate does."""
+    temperature rise (exact enumeration). Raises Infeasible when no candidate does.
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The ``[converter]`` table, {key: value} in SI units (temperatures in C): missing keys take their
+        defaults, None takes them all; a checked :class:`~handbook.design.common.Table` is taken as it is.
+
+    Returns
+    -------
+    ConverterResult
+        The checked spec; eq 1 to 6a's alpha (pure number), t1, t2 (s), I_peak (A), L1 (H), R1 (ohm); the
+        fitted R1 (ohm), the peak currents (A), the inductances (H), the frequency range (Hz); the coil (shape,
+        material, turns, gap in m, A_L in H, wire, flux densities in T, losses in W, rise in K, saturation margin
+        as a fraction); V_L+, V_L- (V) and I_rms (A); what binds, the warnings, every candidate and the next
+        smaller one.
+
+    Raises
+    ------
+    InputError
+        When the spec is invalid.
+    Infeasible
+        When no candidate core meets it (:func:`infeasible`).
+    """
     s = checked(spec)
     op, every, chosen = choose(s)
     if chosen is None:
@@ -338,7 +489,27 @@ def design(spec: dict | None = None) -> ConverterResult:
 
 
 def sweep(s: dict, frequencies) -> list[dict]:
-    """The chosen coil at each f_min (the rest of the spec unchanged): the trade-off of the chapter's plot."""
+    """The chosen coil at each f_min (the rest of the spec unchanged): the trade-off of the chapter's plot.
+
+    Parameters
+    ----------
+    s : Mapping
+        The ``[converter]`` table, {key: value} in SI units (checked again with each ``f_min``).
+    frequencies : iterable of float
+        The values of ``f_min`` to design at, Hz.
+
+    Returns
+    -------
+    list of dict
+        One row per frequency: ``f_min`` (Hz) and ``core`` (shape and material, str, None where nothing meets
+        the spec), and where something does ``ve`` (m^3), ``l1`` and ``l1_nominal`` (H), ``turns``, ``core_loss``
+        and ``winding_loss`` (W) and ``temperature_rise`` (K).
+
+    Raises
+    ------
+    InputError
+        When the spec with that ``f_min`` is invalid (an ``f_min`` out of range, for one).
+    """
     rows = []
     for f in frequencies:
         try:

@@ -30,12 +30,13 @@ resistors take all their combinations. No direction of any resistor is assumed: 
 from __future__ import annotations
 
 import itertools
+from collections.abc import Mapping
 
 import casadi as ca
 import numpy as np
 
 from ...core import InputError, series
-from ..common import completed, ordered
+from ..common import Table, completed, is_checked, ordered
 
 #: the divider resistors, in the order of every tuple here
 DIVIDER = ("r9", "r10", "r11", "r12", "r13")
@@ -173,7 +174,9 @@ def corner_proof() -> dict:
     return out
 
 
-def checked(spec: dict | None) -> dict:
+def checked(spec: Mapping | None) -> Table:
+    if is_checked(TABLE, spec):  # checked once, where it was read
+        return spec
     s = completed(TABLE, spec)
     ordered(TABLE, "i_no_trip", "i_must_trip", s, "A")
     for name in RESISTORS:
@@ -183,7 +186,7 @@ def checked(spec: dict | None) -> dict:
     if s["i_no_trip"] * (1 + s["min_margin"]) >= s["i_must_trip"] * (1 - s["min_margin"]):
         raise InputError(f"{TABLE}.min_margin = {s['min_margin']:g} leaves no room between i_no_trip = "
                          f"{s['i_no_trip']:g} A and i_must_trip = {s['i_must_trip']:g} A: use a smaller margin")
-    return s
+    return Table(TABLE, s)
 
 
 def choices(s: dict, name: str) -> np.ndarray:

@@ -10,9 +10,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import models
-from .limiters import _mid, _probe, opamp_block, opamp_defaults, trip_voltage
-from .runner import run
+from .. import models
+from ..runner import run
+from .decks import _mid, _probe, opamp_block, opamp_defaults, trip_voltage
 
 # ----------------------------------------------------------------------------------------------
 # a design confirmed: every candidate corner simulated, SPICE's own extremes kept
@@ -26,7 +26,7 @@ def design_candidates(result) -> list[dict]:
     each of R7, R9..R13 at either end of its tolerance (64), the zener at either end of its tolerance and drift,
     the offset at either sign, and the two bias currents at each of the six vertices of their polygon (both at
     +-I_B, or one of them I_os smaller, from the spec's input_offset_current): 1536 corners."""
-    from ..design.limiter import model as net
+    from ...design.limiter import model as net
 
     s = result.spec
     t, ib, off = s["resistor_tolerance"], s["input_bias"], s["offset"]

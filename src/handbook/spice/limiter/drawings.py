@@ -3,7 +3,7 @@ as their netlists (:mod:`.limiters`): every part is labelled with its designator
 :func:`labels` reads them back for the test that the drawing and the netlist hold the same set."""
 from __future__ import annotations
 
-from ..core.units import eng
+from ...core.units import eng
 
 UNITS = {"ohm": "Ω", "V": "V", "A": "A"}
 

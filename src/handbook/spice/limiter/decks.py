@@ -17,12 +17,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core import series
-from ..sources import an93008, an94002
-from ..sources.an94002.parts import PARTS
-from . import models
-from .circuit import Check, Circuit, Part
-from .runner import run
+from ...core import series
+from ...sources import an93008, an94002
+from ...sources.an94002.parts import PARTS
+from .. import models
+from ..circuit import Check, Circuit, Part
+from ..runner import run
 
 RAMP = 1.0  # s: the motor current's ramp (slow against the LM358's 7 Hz pole, see the checks' tolerances)
 T0 = 1e-3  # s: the pause before the ramp, where the V_cs = 0 figures are read
@@ -215,8 +215,8 @@ def opamp(p: dict | None = None) -> Circuit:
 def corner_defaults() -> dict:
     """The note's network at the corner of least headroom of the design chapter's judgement: D1 at its lowest
     (tolerance 6.1 % and drift, the design spec), R12 low and R13 high by their 1 %, bias 500 nA."""
-    from ..design import limiter as design
-    from ..design.limiter import model as net
+    from ...design import limiter as design
+    from ...design.limiter import model as net
 
     s = design.checked({})
     p = opamp_defaults()
@@ -238,7 +238,7 @@ def corner_equations(p: dict) -> dict:
     """The corner's figures from the project's equations: least headroom of V+ (eq 11 with the bias, as the
     design's limiter_network computes it), the sense voltage at which V+ comes back to 2 V below the supply,
     and the trip eq 13 with the offset and bias (limiter_network's node equation)."""
-    from ..design.limiter import model as net
+    from ...design.limiter import model as net
 
     s = p["spec"]
     r_p = p["r12"] * p["r13"] / (p["r12"] + p["r13"])
@@ -334,17 +334,17 @@ def supply_referenced(p: dict | None = None) -> Circuit:
 
 
 def draw_one_transistor(parts):
-    from .limiter_drawings import one_transistor
+    from .drawings import one_transistor
     return one_transistor(parts)
 
 
 def draw_opamp(parts):
-    from .limiter_drawings import opamp
+    from .drawings import opamp
     return opamp(parts)
 
 
 def draw_supply(parts):
-    from .limiter_drawings import supply
+    from .drawings import supply
     return supply(parts)
 
 
