@@ -2,8 +2,8 @@
 scheduler below sends every test on its own, except what must stay together on one worker:
 
 * a notebook's cells (nbval runs them in order in one kernel): one unit per notebook;
-* a test file whose module-scoped fixture is expensive (the browser check builds the book once, the
-  converter tests build the core table once): one unit per file, so the fixture is built once.
+* a test file (or folder) whose fixture is expensive (the browser check builds the book once, the
+  converter tests import PyOpenMagnetics once): one unit, so the fixture is built once.
 
 The longest units go out first, so that neither worker is left with a long one at the end.
 (xdist's own ``--dist loadgroup`` marks do not take under pytest 9.2, whose node ids moved from
@@ -11,16 +11,18 @@ The longest units go out first, so that neither worker is left with a long one a
 """
 
 #: test files kept on one worker because their module-scoped fixture is expensive to build twice
-TOGETHER = ("tests/test_browser.py", "tests/design/test_converter.py", "tests/report/test_plots.py")
+TOGETHER = ("tests/test_browser.py", "tests/design/converter/", "tests/report/test_plots.py")
 #: units sent first, longest first (measured on the 2-core machine); the rest follow in collection order
-FIRST = ("tests/test_browser.py", "tests/design/test_current_limiter.py::test_branch_and_bound",
-         "tests/design/test_converter.py", "tests/design/test_current_limiter.py::test_every_design",
+FIRST = ("tests/test_browser.py", "tests/design/limiter/test_limiter_search.py::test_branch_and_bound",
+         "tests/design/converter/", "tests/design/limiter/test_limiter_search.py::test_every_design",
          "tests/design/test_fuzz_specs.py")
 
 
 def _unit(nodeid: str) -> str:
     path = nodeid.split("::", 1)[0]
-    return path if path.endswith(".ipynb") or path in TOGETHER else nodeid
+    if path.endswith(".ipynb"):
+        return path
+    return next((unit for unit in TOGETHER if path.startswith(unit)), nodeid)
 
 
 def _rank(unit: str) -> int:

@@ -25,9 +25,9 @@ def key_error(table: str, key: str) -> InputError:
     InputError
         The error to raise (not raised here), its message naming the key's table or the near match.
     """
-    home = next((t for t, params in TABLES.items() if any(p.name == key for p in params)), None)
-    if home is not None and home != table:
-        return InputError(f"{key} is not a key of [{table}]: it belongs in [{home}]")
+    homes = [t for t, params in TABLES.items() if t != table and any(p.name == key for p in params)]
+    if homes:
+        return InputError(f"{key} is not a key of [{table}]: it belongs in {' or '.join(f'[{t}]' for t in homes)}")
     names = [p.name for p in TABLES[table]]
     near = difflib.get_close_matches(key, names, n=1)
     return InputError(f"unknown key {table}.{key}" + (f": did you mean {table}.{near[0]}?" if near else
@@ -57,10 +57,15 @@ class Table(Mapping):
         return len(self._values)
 
     def __getattr__(self, key: str):
+        if key.startswith("_"):  # not a key: copy and pickle look for such names before __init__ has run
+            raise AttributeError(key)
         try:
             return self._values[key]
         except KeyError:
             raise AttributeError(f"[{self.name}] has no key {key!r}") from None
+
+    def __reduce__(self):
+        return Table, (self.name, self._values)
 
     def __setattr__(self, key, value):
         raise AttributeError(f"a checked [{self.name}] table is frozen: make a new spec with {{**s, {key!r}: ...}}")

@@ -132,9 +132,7 @@ def check(spec: Mapping) -> dict:
     InputError
         When a table of a plain mapping is invalid.
     """
-    if isinstance(spec, Spec):
-        return spec.tables
-    return {t: DESIGNS[t].checked(spec.get(t, {})) for t in DESIGNS}
+    return (spec if isinstance(spec, Spec) else parse(dict(spec))).tables
 
 
 def run_each(spec: dict) -> dict:

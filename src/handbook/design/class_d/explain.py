@@ -222,6 +222,9 @@ def infeasible(s: dict, r_dly: float, searched=None):
             spec_key = "thd_test_power"
         asked = s[spec_key]
         shown = "an ideal heat sink, 0 K/W" if asked is None else f"{spec_key} = {fmt.format(asked)}"
+        if k == "inductor peak" and asked > lm4651.I_LIMIT:  # the LM4651's own current limit binds first
+            asked = lm4651.I_LIMIT
+            shown = f"the LM4651's current limit, {fmt.format(asked)} (i_sat = {fmt.format(s[spec_key])} is above it)"
         parts.append(f"{label}: best {fmt.format(ev[key])} (asked {shown})")
         achievable[key] = ev[key]
         if k == "heat sink":

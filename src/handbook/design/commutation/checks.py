@@ -3,12 +3,14 @@ intended still designs, and says why in ``warnings`` (each naming the limit and 
 from __future__ import annotations
 
 from ...sources.an94002 import circuit as an94002
+from ...sources.an94002 import params as an94002_params
+from .timers import CAP_TI_MIN
 
 #: CAP-TI internal-timing charge (0.2 V -> 0.3 V) and discharge currents, typical (TDA5144 datasheet;
-#: AN94002 2.1.3: 57 uA and 28 uA)
-I_TI_FAST, I_TI_DISCHARGE, V_TI_STEP = 57e-6, 28e-6, 0.1
-#: the smallest CAP-TI (AN94002 2.1.3)
-CAP_TI_MIN = 2e-9
+#: AN94002 2.1.3: 57 uA and 28 uA): the source's own parameters, not typed again
+_NOTE = an94002_params()
+I_TI_FAST, I_TI_DISCHARGE = _NOTE["i_ti_fast"], _NOTE["i_ti_discharge"]
+V_TI_STEP = round(_NOTE["v_ti_low"] - _NOTE["v_ti_start"], 12)  # 0.1 V, not 0.0999...9
 #: pin + board stray capacitance (assumption: a few pF for an SO20/SO28 pin and its track)
 STRAY = 5e-12
 #: above this a timing capacitor is in practice an electrolytic (assumption: film/ceramic end about here)

@@ -348,10 +348,10 @@ def sensitivity(s: dict) -> list[dict]:
 
     base = ratio({})
     ideal = ratio({k: v for g in groups.values() for k, v in g.items()})
-    total = math.log(ideal / base)
+    total = math.log(ideal / base)  # 0 when nothing spreads: no group has a share of a loss that is not there
     rows = []
     for name, pinned in groups.items():
         gain = ratio(pinned) / base
-        rows.append({"group": name, "range_gain": gain, "share": math.log(gain) / total,
+        rows.append({"group": name, "range_gain": gain, "share": math.log(gain) / total if total > 0 else 0.0,
                      "cap_cd_bound": bounds({**s, **pinned})[0]})
     return rows

@@ -134,7 +134,7 @@ def supplies(s: dict, n: int = SUPPLY_POINTS) -> list[float]:
     """
     lo, hi = s["v_supply_min"], min(s["v_supply_max"], v_top(s) * (1 - 1e-6))
     hi = max(hi, lo)
-    return [lo + (hi - lo) * k / (n - 1) for k in range(n)] if hi > lo else [lo]
+    return [lo + (hi - lo) * k / (n - 1) for k in range(n)] if hi > lo and n > 1 else [lo]
 
 
 def steinmetz_range(material: dict, f: float) -> tuple[dict, bool]:

@@ -5,7 +5,7 @@ shapes, materials and wires in its wheel. Its adviser takes tens of seconds per 
 figures the coil design needs are read from that database once, for a narrowed candidate set, and
 shipped as ``cores.json`` beside this module: :func:`load` reads it (no PyOpenMagnetics at design
 time), :func:`build` rebuilds it (``python -m handbook.design.converter.cores`` writes it), and
-``tests/design/test_converter.py`` rebuilds a sample of rows from PyOpenMagnetics to prove the file current.
+``tests/design/converter/test_converter_cores.py`` rebuilds a sample of rows from PyOpenMagnetics to prove the file current.
 
 Candidates: gapped two-piece ferrite sets of the families a small board coil uses (pot cores P, RM, EP,
 E and EFD, from about 5 mm to 26 mm), each in two MnZn power ferrites made for 25 to 200 kHz (Ferroxcube

@@ -126,6 +126,15 @@ def headroom_corners(r, s: dict) -> list:
     return out
 
 
+def margins(low, high, r7, s: dict) -> tuple:
+    """The margins of trip voltages ``low`` and ``high`` (one corner's, or arrays of them) against the window:
+    (low / (R7 (1 + t7)) / i_no_trip - 1, 1 - high / (R7 (1 - t7)) / i_must_trip), R7 at the end of its
+    tolerance that is worst for a positive voltage. The one place the margin is written: :func:`verify` takes
+    it at the worst corners, the search's bounds and relaxation corner by corner (numpy, floats or casadi)."""
+    return (low / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1,
+            1 - high / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"]))
+
+
 def trip_currents(r7, r, s: dict):
     """(lowest, highest) trip current over every corner, R7's tolerance included (numpy or floats); a
     negative trip voltage (a network that trips with no current) divides by the smallest R7."""
@@ -140,7 +149,8 @@ def verify(r7, r, s: dict) -> dict:
     """Every figure of one network (or of arrays of networks) at its exact worst corners."""
     import numpy as np
     i_lo, i_hi = trip_currents(r7, r, s)
-    m_lo, m_hi = i_lo / s["i_no_trip"] - 1, 1 - i_hi / s["i_must_trip"]
+    # the margins of the worst trip currents (a negative trip voltage takes R7's other end)
+    m_lo, m_hi = margins(i_lo * r7 * (1 + s["r7_tolerance"]), i_hi * r7 * (1 - s["r7_tolerance"]), r7, s)
     headroom = np.min(np.stack(headroom_corners(r, s)), axis=0)
     i_div = divider_current(r, s)
     ok = ((np.minimum(m_lo, m_hi) >= s["min_margin"] - 1e-12) & (headroom >= s["input_headroom"] - 1e-12) & (i_lo > 0)

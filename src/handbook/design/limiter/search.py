@@ -42,8 +42,8 @@ def _solvers():
     s = dict(zip(RELAX_KEYS, ca.vertsplit(q[:-1])))
     r7, r, t = ca.exp(x[0]), tuple(ca.exp(x[i]) for i in range(1, 6)), x[6]
     lows, highs = net.trip_voltage_corners(r, s, relaxed=True)
-    g = ([lo / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1 - t for lo in lows]
-         + [1 - hi / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"]) - t for hi in highs]
+    g = ([net.margins(lo, 0.0, r7, s)[0] - t for lo in lows]
+         + [net.margins(0.0, hi, r7, s)[1] - t for hi in highs]
          + [(v - s["input_headroom"]) / q[-1] for v in net.headroom_corners(r, s)]
          + [1 - net.divider_current(r, s) / s["divider_current_max"]])
     nlp = {"x": x, "p": ca.vertcat(w, q), "f": w * x[0] - (1 - w) * x[6], "g": ca.vertcat(*g)}
@@ -137,8 +137,7 @@ def vertex_bound(r7: float, lb, ub, s: dict) -> float:
     """
     vert = np.array(list(itertools.product(*zip(lb, ub)))).T
     lows, highs = net.trip_voltage_corners(tuple(vert), s)
-    m = np.concatenate([np.stack(lows) / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1,
-                        1 - np.stack(highs) / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"])])
+    m = np.concatenate(net.margins(np.stack(lows), np.stack(highs), r7, s))
     head = np.stack(net.headroom_corners(tuple(vert), s))
     if (head.max(axis=1) < s["input_headroom"] - 1e-12).any() or net.divider_current(ub, s) > s["divider_current_max"]:
         return -np.inf

@@ -1,0 +1,115 @@
+"""The converter's operating point and its result: eq 1 to 6a and the parts' tolerances by hand, the
+frequency range, the exit-3 searches and the warnings (handbook.design.converter.result)."""
+
+import pytest
+from converter_oracle import E96, hand_frequency, hand_operating_point
+
+from handbook.design.converter import result as converter
+from handbook.design.solvers import Infeasible
+
+
+def test_eq_1_to_6a_at_the_defaults(result):
+    # V_L+ = 12 + 2.5 + 0.8 - 8 = 7.3 V, V_L- = 8 - 0.5 - 0.4 = 7.1 V
+    assert result.alpha == pytest.approx(7.3 / 7.1, rel=1e-12)
+    assert result.t1 == pytest.approx(25.347e-6, rel=1e-4)  # 50 us x 7.3 / 14.4
+    assert result.t2 == pytest.approx(24.653e-6, rel=1e-4)
+    assert result.i_peak == pytest.approx(0.20282, rel=1e-4)  # 2 x 50 mA x 14.4 / 7.1
+    assert result.l1 == pytest.approx(887.33e-6, rel=1e-4)
+    assert result.r1 == pytest.approx(1.9722, rel=1e-4)
+    hand = hand_operating_point()
+    for key, value in hand.items():
+        assert getattr(result, key) == pytest.approx(value, rel=1e-12), key
+
+
+def test_eq_1_to_6a_with_other_inputs():
+    spec = {"v_supply_min": 10.0, "v_out": 15.0, "i_out": 0.08, "f_min": 30e3, "v_regulator_drop": 2.0,
+            "v_f": 0.7, "v_ce_sat": 0.3, "v12h": 0.3}
+    op = converter.operating_point(converter.checked(spec))
+    hand = hand_operating_point(10.0, 15.0, 2.0, 0.7, 0.3, 0.3, 0.08, 30e3)
+    for key, value in hand.items():
+        assert op[key] == pytest.approx(value, rel=1e-12), key
+
+
+def test_r1_and_l1_with_their_tolerances_by_hand(result):
+    # R1: the largest E96 value at or below 1.9722 / 1.01 = 1.9527 ohm is 1.91 ohm (1.96 is above)
+    target = 0.4 / result.i_peak / 1.01
+    e96 = [v * 10 ** k for k in (-1, 0, 1) for v in E96]
+    assert result.r1_part == pytest.approx(max(v for v in e96 if v <= target), rel=1e-9) == pytest.approx(1.91)
+    # at +1 % the peak current still reaches eq 5's (the load carried is proportional to it)
+    i_min, i_max = 0.4 / (1.91 * 1.01), 0.4 / (1.91 * 0.99)
+    assert i_min >= result.i_peak and result.i_peak_max == pytest.approx(i_max, rel=1e-12)
+    # L1 is a largest inductance: wound for L1 I_peak / I_peak,max / 1.1, so L at +10 % with I_peak,max runs at
+    # f_min at the lowest VCC2
+    l_nom = result.l1 * result.i_peak / i_max / 1.1
+    assert result.l1_nominal == pytest.approx(l_nom, rel=1e-12)
+    assert hand_frequency(8.0, l_nom * 1.1, i_max) == pytest.approx(20e3, rel=1e-9)
+    # the frequency over VCC2 = 8 .. 14.4 V: slowest at 14.4 V (L +10 %, I_peak,max); fastest where V_L- = V_L+
+    # (VCC2 = (15.3 + 0.9) / 2 = 8.1 V) with L -10 % and I_peak,min
+    assert result.f_sw_min == pytest.approx(hand_frequency(14.4, l_nom * 1.1, i_max), rel=1e-9)
+    assert result.f_sw_min == pytest.approx(4688, rel=1e-3)
+    assert result.f_sw_max == pytest.approx(hand_frequency(8.1, l_nom * 0.9, i_min), rel=1e-9)
+    # the defaults' coil: P 7.4/4.0 in TDK N87, 99 turns of 0.09 mm (the smallest candidate passes; the
+    # current density is advisory: the temperature rise, 17.9 K, counts the copper loss)
+    assert (result.core_shape, result.core_material, result.turns, result.wire) == ("P 7.4/4.0", "N87", 99,
+                                                                                   "Round 0.09 - Grade 1")
+    assert result.binding.startswith("none")
+
+
+def test_more_current_needs_a_larger_core_and_too_much_is_infeasible():
+    small, large = converter.design({"i_out": 0.02}), converter.design({"i_out": 0.3})
+    assert small.coil.ve < large.coil.ve
+    assert large.binding.startswith("saturation and temperature rise (the next smaller core, P 11/7")
+    with pytest.raises(Infeasible) as exc:
+        converter.design({"i_out": 5.0})
+    text = str(exc.value)
+    assert "i_out up to" in text and "larger core family" in text
+    i_ok = exc.value.achievable["i_out"]
+    assert 1.0 < i_ok < 5.0
+    converter.design({"i_out": i_ok})  # what it says can be met, is
+    with pytest.raises(Infeasible):
+        converter.design({"i_out": i_ok * 1.02})
+
+
+def test_exit_3_finds_a_lower_current_and_a_higher_frequency():
+    """At f_min = 1 kHz, 0.5 A needs too many turns for any core: the downward scan finds the current that
+    works (the old upward bisection from 1 uA found none), and the frequency route a higher f_min."""
+    spec = {"f_min": 1e3, "i_out": 0.5}
+    with pytest.raises(Infeasible) as exc:
+        converter.design(spec)
+    got = exc.value.achievable
+    assert got["i_out"] is not None and got["f_min"] is not None
+    assert 0.05 < got["i_out"] < 0.5 and 1e3 < got["f_min"] <= 1e6
+    assert "i_out up to" in str(exc.value) and "f_min = " in str(exc.value)
+    converter.design({**spec, "i_out": got["i_out"]})
+    converter.design({**spec, "f_min": got["f_min"]})
+    with pytest.raises(Infeasible):
+        converter.design({**spec, "f_min": got["f_min"] / 1.02})
+    converter.design({**spec, "i_out": 0.05})  # the review's example: designs
+
+
+def test_warnings():
+    default = converter.design().warnings
+    assert any("audio band" in w and "14.4 V" in w and "4.688 kHz" in w for w in default)
+    assert any("extrapolated" in w for w in default)  # 20 kHz and below, under the 25 kHz fits
+    assert any("advisory" in w for w in default)  # 19.2 A/mm^2 in 0.09 mm wire, 17.9 K
+    quiet = converter.design({"f_min": 40e3, "v_supply_max": 8.0}).warnings
+    assert not any("audio band" in w or "extrapolated" in w for w in quiet)
+    # VCC2 up to the output side: the frequency falls to zero
+    top = converter.design({"v_supply_max": 15.3})
+    assert top.f_sw_min == 0.0 and any("V_L+ vanishes" in w for w in top.warnings)
+    # a peak current above the switch's assumed rating; an absurdly small current: thousands of turns
+    assert any("assumed for the TCA5600's internal switch" in w for w in converter.design({"i_out": 0.5}).warnings)
+    tiny = converter.design({"i_out": 1e-6})
+    assert tiny.turns > 300 and any("self-resonates" in w and "impractical" in w for w in tiny.warnings)
+
+
+def test_schema_defaults_are_the_chapters():
+    from handbook.design import schema
+    from handbook.sources.tca5600 import data
+
+    chapter = {p.name: p.default for p in data.PARAMETERS}
+    names = {"v_supply_min": "v_cc2_min", "v_out": "v_out2", "i_out": "i_out2", "f_min": "f_min",
+             "v_regulator_drop": "regulator_drop", "v_f": "v_f", "vce_sat": "vce_sat", "v12h": "v12h"}
+    names["v_ce_sat"] = names.pop("vce_sat")
+    defaults = schema.defaults("converter")
+    assert {k: defaults[k] for k in names} == {k: chapter[v] for k, v in names.items()}

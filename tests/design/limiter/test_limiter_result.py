@@ -1,0 +1,63 @@
+"""The limiter's result, its explanations and its analysis (handbook.design.limiter.result, .explain,
+.analysis): a pinned resistor named, what can be met, the warnings, bad input, the Monte Carlo lot."""
+import math
+
+import pytest
+from hypothesis import HealthCheck, settings
+
+from handbook.core import InputError
+from handbook.design import limiter
+from handbook.design.solvers import Infeasible
+
+from oracles import limiter_corners
+
+SETTINGS = settings(max_examples=25, deadline=None, derandomize=True,
+                    suppress_health_check=[HealthCheck.too_slow])
+
+
+def test_pinned_resistor_that_breaks_the_spec_is_named():
+    with pytest.raises(Infeasible) as exc:
+        limiter.design({"r12": 1e3, "r13": 100e3})
+    assert "r12 = 1000 ohm (pinned)" in str(exc.value) and exc.value.achievable["pinned"] == "r12"
+    assert limiter.design({"r13": 100e3}).r12 > 1e3  # freed, R12 takes another value
+
+
+def test_infeasible_margin_says_what_can_be_met():
+    with pytest.raises(Infeasible) as exc:
+        limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.35})
+    best = exc.value.achievable["min_margin_max"]
+    assert 0 < best < 0.02 and f"best worst margin any network reaches is {best:.2%}" in str(exc.value)
+    # the same spec with half the margin the message offers designs, and holds at every corner
+    r = limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.35, "min_margin": best * 0.5})
+    lo, hi, _, _ = limiter_corners(r.r7, r.network, r.spec)
+    assert lo >= 1.0 * (1 + best * 0.5) - 1e-9 and hi <= 1.35 * (1 - best * 0.5) + 1e-9
+    with pytest.raises(Infeasible, match="none keeps it inside the window at all"):
+        limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.25})
+
+
+def test_warnings_name_the_ic_limit_and_the_sense_resistor_power():
+    r = limiter.design({"ic": "TDA5143"})
+    assert any("TDA5143" in w and "0.7 A" in w for w in r.warnings)
+    cool = limiter.design({"r7_power_rating": 2.0})
+    assert not any("R7 dissipates" in w for w in cool.warnings) and cool.p_r7 < 2.0
+
+
+def test_bad_limiter_input_names_the_key():
+    with pytest.raises(InputError, match="current_limiter.r9_min"):
+        limiter.design({"r9_min": 1e4, "r9_max": 1e3})
+    with pytest.raises(InputError, match=r"r7_min = 1.05 ohm .. current_limiter.r7_max = 1.08 ohm holds no E24 value"):
+        limiter.design({"r7_min": 1.05, "r7_max": 1.08})
+    with pytest.raises(InputError, match="r13_min"):
+        limiter.checked({"r13_min": 1055.0, "r13_max": 1065.0})
+    with pytest.raises(InputError, match="min_margin"):
+        limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.1, "min_margin": 0.05})
+
+
+def test_monte_carlo_inside_the_corners_and_the_notes_design_outside():
+    r = limiter.design()
+    mc = limiter.monte_carlo_trip(r.r7, r.network, r.spec, n=50_000, seed=1)
+    assert mc["yield"] == 1.0 and r.i_trip_min <= mc["i_min"] and mc["i_max"] <= r.i_trip_max
+    # the note's method: V_cs = 100 mV by eq 14 (R9 = 267 ohm) and R7 = 0.075 ohm
+    note = limiter.monte_carlo_trip(0.075, (267.0, 5.6e3, 16e3, 5.6e3, 16e3), r.spec, n=50_000, seed=1)
+    assert note["yield"] < 0.85 and note["i_min"] < 0.5 and note["i_max"] > 2.0
+    assert math.isfinite(note["i_p999"])
