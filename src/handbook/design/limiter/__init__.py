@@ -17,13 +17,42 @@ from .search import enumerate_series as enumerate
 
 def explain(spec: dict | None = None):
     """Why ``spec`` cannot be met, and what can (an :class:`~handbook.design.solvers.Infeasible`), or None
-    when a design meets it."""
+    when a design meets it.
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[current_limiter]`` table, {key: value}, SI units (None: the defaults).
+
+    Returns
+    -------
+    Infeasible or None
+        The exception :func:`design` raises (not raised again), or None when a design meets ``spec``.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is invalid.
+    """
     return explained(design, spec)
 
 
 def sensitivity(result: LimiterResult) -> list[dict]:
     """Which tolerance eats the trip-current window of a designed limiter, one row per source:
-    {"source", "share" (of the log spread), "margin_without" (the worst margin with that source removed)}."""
+    {"source", "share" (of the log spread), "margin_without" (the worst margin with that source removed)}.
+
+    Parameters
+    ----------
+    result : LimiterResult
+        A design (:func:`design`); its R7, network and checked spec are used.
+
+    Returns
+    -------
+    list of dict
+        One per entry of :data:`SPREAD_SOURCES`, in its order: "source", its name (str); "share", its share of
+        ln(i_trip_max / i_trip_min), a fraction (the shares add to one); "margin_without", the worst margin with
+        that source set to zero, a fraction of the limits.
+    """
     return [{"source": name, "share": share, "margin_without": margin}
             for name, share, margin in _sensitivity(result.r7, result.network, result.spec)]
 

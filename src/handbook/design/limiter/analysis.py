@@ -18,7 +18,24 @@ SPREAD_SOURCES = {"R9..R13 tolerance": ("resistor_tolerance",), "R7 tolerance": 
 def sensitivity(r7: float, network, s: dict) -> list[tuple[str, float, float]]:
     """Which tolerance eats the window: for each source, (name, share of ln(i_trip_max / i_trip_min), the
     worst margin with that source removed). The shares are of the log spread at every corner, each
-    source removed alone; they need not add to one (the sources interact), so they are normalised."""
+    source removed alone; they need not add to one (the sources interact), so they are normalised.
+
+    Parameters
+    ----------
+    r7 : float
+        The sense resistor R7, nominal, ohm.
+    network : tuple of float
+        (R9, R10, R11, R12, R13), nominal, ohm.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+
+    Returns
+    -------
+    list of tuple
+        One (source, share, margin) per entry of :data:`SPREAD_SOURCES`, in its order: the source's name (str);
+        its share of ln(i_trip_max / i_trip_min), a fraction (the shares add to one); the worst margin with that
+        source's keys set to zero, a fraction of the limits.
+    """
     base = net.verify(r7, network, s)
     spread = math.log(float(base["i_trip_max"] / base["i_trip_min"]))
     rows = []
@@ -31,7 +48,34 @@ def sensitivity(r7: float, network, s: dict) -> list[tuple[str, float, float]]:
 
 
 def monte_carlo_trip(r7: float, network, s: dict, n: int = 100_000, seed: int = 1) -> dict:
-    """Trip currents of ``n`` boards, every part uniform within its tolerance (fixed seed, vectorised)."""
+    """Trip currents of ``n`` boards, every part uniform within its tolerance (fixed seed, vectorised).
+
+    Parameters
+    ----------
+    r7 : float
+        The sense resistor R7, nominal, ohm.
+    network : tuple of float
+        (R9, R10, R11, R12, R13), nominal, ohm.
+    s : Mapping or None
+        The ``[current_limiter]`` table, {key: value}, SI units (checked here; None: the defaults).
+    n : int
+        The number of boards.
+    seed : int
+        The random generator's seed.
+
+    Returns
+    -------
+    dict
+        "yield": the fraction of boards whose trip current lies within ``i_no_trip`` .. ``i_must_trip`` (no
+        margin); "i_p001" and "i_p999": the 0.1 % and 99.9 % quantiles of the trip current, A; "i_min" and
+        "i_max": its lowest and highest, A (floats); "samples": every board's trip current, A (numpy.ndarray,
+        shape (n,)).
+
+    Raises
+    ------
+    InputError
+        When ``s`` is invalid (:func:`~handbook.design.limiter.model.checked`).
+    """
     s = checked(s)
     rng = np.random.default_rng(seed)
     t = s["resistor_tolerance"]

@@ -1,7 +1,7 @@
 """What can be met when no limiter network meets the spec: the message of the Infeasible the design raises.
 
 In order: the input headroom alone (its best over the resistor ranges, exact at the range's vertices by
-the corner proof of :mod:`.limiter_network`); the margin (the best worst margin any continuous network
+the corner proof of :mod:`.model`); the margin (the best worst margin any continuous network
 reaches, from the relaxation); a pinned resistor (the design repeated without each pin); the ranges.
 """
 from __future__ import annotations
@@ -15,7 +15,24 @@ from .search import Relaxation
 
 
 def best_margin(s: dict) -> float | None:
-    """The largest worst margin of any continuous network within the ranges (IPOPT on the relaxation)."""
+    """The largest worst margin of any continuous network within the ranges (IPOPT on the relaxation).
+
+    Parameters
+    ----------
+    s : Mapping
+        The ``[current_limiter]`` table (SI units); every resistor's pin or series range bounds the relaxation.
+
+    Returns
+    -------
+    float or None
+        The largest worst margin, a fraction of the limits (negative: no continuous network keeps every corner
+        inside the window); None when IPOPT finds the relaxation infeasible.
+
+    Raises
+    ------
+    InputError
+        When a free resistor's range holds no value of its series.
+    """
     lists = [choices(s, n) for n in net.RESISTORS]
     lb, ub = np.array([v[0] for v in lists]), np.array([v[-1] for v in lists])
     res = Relaxation(s).solve(lb, ub, [*np.log(np.sqrt(lb * ub)), 0.0], 0.0)
@@ -23,7 +40,24 @@ def best_margin(s: dict) -> float | None:
 
 
 def least_divider_current(s: dict) -> float:
-    """The least current any network of the ranges (or pins) draws from the zener node (largest values)."""
+    """The least current any network of the ranges (or pins) draws from the zener node (largest values).
+
+    Parameters
+    ----------
+    s : Mapping
+        The ``[current_limiter]`` table (SI units); each divider resistor's pin or series range is used.
+
+    Returns
+    -------
+    float
+        The least divider current, A: :func:`~handbook.design.limiter.model.divider_current` of every divider
+        resistor at its largest value.
+
+    Raises
+    ------
+    InputError
+        When a free divider resistor's range holds no value of its series.
+    """
     return float(net.divider_current(tuple(choices(s, n)[-1] for n in net.DIVIDER), s))
 
 
@@ -57,7 +91,29 @@ def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
 
 def explain(s: dict, r7_relaxed: float | None) -> Infeasible:
     """The Infeasible that says why, and what would be met. A pinned resistor is blamed when freeing
-    it alone lifts the cause (the headroom's exact best, or the relaxation's best margin, reaches the spec)."""
+    it alone lifts the cause (the headroom's exact best, or the relaxation's best margin, reaches the spec).
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units) that no network meets.
+    r7_relaxed : float or None
+        The relaxation's smallest R7, ohm (None: the search found none, or stopped before it).
+
+    Returns
+    -------
+    Infeasible
+        Not raised: its message says why and what can be met; its ``achievable`` holds one of
+        "divider_current_min" (the least divider current, A), "headroom_max" (the best least headroom, V),
+        "min_margin_max" (the best worst margin, a fraction, or None) or "r7_relaxed" (ohm, or None), and
+        "pinned" (the blamed resistor's name, "r7" .. "r13") when a pinned resistor is blamed.
+
+    Raises
+    ------
+    InputError
+        When a resistor's range holds no value of its series (a pinned resistor's range is read once it is
+        freed).
+    """
     message, achievable = _reason(s, r7_relaxed)
     for name in (n for n in ("r7",) + net.DIVIDER if s[n] is not None):
         free = {**s, name: None}

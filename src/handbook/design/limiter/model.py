@@ -50,7 +50,19 @@ RESISTORS = ("r7",) + DIVIDER
 
 
 def zener_range(s: dict) -> tuple[float, float]:
-    """Lowest and highest zener voltage: tolerance plus drift over the temperature span."""
+    """Lowest and highest zener voltage: tolerance plus drift over the temperature span.
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units); ``zener_voltage`` (V), ``zener_tolerance`` (fraction),
+        ``zener_tc`` (V/K) and ``temp_span`` (K) are read (casadi symbols in the search's relaxation).
+
+    Returns
+    -------
+    tuple of float
+        (lowest, highest) V_D1, V: ``zener_voltage`` (1 -+ ``zener_tolerance``) -+ ``zener_tc`` ``temp_span``.
+    """
     drift = s["zener_tc"] * s["temp_span"]
     vz = s["zener_voltage"]
     return vz * (1 - s["zener_tolerance"]) - drift, vz * (1 + s["zener_tolerance"]) + drift
@@ -70,7 +82,26 @@ def trip_voltage_corners(r, s: dict, relaxed: bool = False) -> tuple[list, list]
     ``lows`` and the highest in ``highs`` (the others matter only where 1 - B/A <= 0, where V_cs is negative
     at that corner, which the lower trip limit refuses anyway), and the bias error's |a - b| I_b +
     min(a, b) I_os written as the larger of its two smooth branches, a I_b - b (I_b - I_os) and
-    b I_b - a (I_b - I_os), each its own entry (a bound on a maximum is a bound on each branch)."""
+    b I_b - a (I_b - I_os), each its own entry (a bound on a maximum is a bound on each branch).
+
+    Parameters
+    ----------
+    r : tuple
+        (R9, R10, R11, R12, R13), ohm: floats, numpy arrays (broadcast together) or casadi symbols.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units): the zener's, the op-amp's (``offset``, V;
+        ``input_bias``, ``input_offset_current``, A) and ``resistor_tolerance`` (fraction) are read. The
+        search's relaxation passes a mapping of casadi symbols instead.
+    relaxed : bool
+        False: every corner exactly, both zener ends. True: the solver's smooth form described above.
+
+    Returns
+    -------
+    tuple of list
+        (lows, highs): the trip voltage V_cs at its lowest and at its highest, V, 32 entries each, each entry a
+        float, numpy array or casadi expression like ``r``. Not relaxed: for each of the 16 corners of :data:`CORNERS`,
+        the lowest then the highest zener voltage; relaxed: for each corner, the two branches of the bias error.
+    """
     vz_lo, vz_hi = zener_range(s)
     ib, off, t = s["input_bias"], s["offset"], s["resistor_tolerance"]
     ios = s["input_offset_current"] if isinstance(ib, ca.SX) else min(s["input_offset_current"], 2 * ib)
@@ -96,14 +127,46 @@ def trip_voltage_corners(r, s: dict, relaxed: bool = False) -> tuple[list, list]
 
 def bias_error(a, b, ib: float, ios: float):
     """The largest |a I_+ - b I_-| over the bias currents' polygon (a, b > 0): |a - b| I_b + min(a, b) I_os.
-    Floats, numpy arrays or casadi symbols (abs is casadi's fabs)."""
+    Floats, numpy arrays or casadi symbols (abs is casadi's fabs).
+
+    Parameters
+    ----------
+    a : float or numpy.ndarray or casadi.SX
+        The factor of I_+ in the trip voltage, ohm (R12), positive.
+    b : float or numpy.ndarray or casadi.SX
+        The factor of I_- in the trip voltage, ohm (R_m / A = ((R9 + R10) || R11) (1 + R12 / R13)), positive.
+    ib : float
+        The largest input bias current I_b, A.
+    ios : float
+        The largest input offset current I_os, A; the formula holds for I_os <= 2 I_b (callers clip it).
+
+    Returns
+    -------
+    float or numpy.ndarray or casadi.SX
+        The largest |a I_+ - b I_-|, V, broadcast over ``a`` and ``b``.
+    """
     d = abs(a - b)
     return d * ib + (a + b - d) / 2 * ios
 
 
 def divider_current(r, s: dict):
     """The most current both dividers draw from the zener node: the highest zener voltage over the smallest
-    resistances (R9 + R10 + R11 and R12 + R13 at their lower tolerance ends; decreasing in each)."""
+    resistances (R9 + R10 + R11 and R12 + R13 at their lower tolerance ends; decreasing in each).
+
+    Parameters
+    ----------
+    r : tuple
+        (R9, R10, R11, R12, R13), ohm: floats, numpy arrays (broadcast together) or casadi symbols.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units); the zener's keys and ``resistor_tolerance``
+        (fraction) are read.
+
+    Returns
+    -------
+    float or numpy.ndarray or casadi.SX
+        The two dividers' current together, A: V_D1,max / ((R9 + R10 + R11) (1 - t)) + V_D1,max / ((R12 + R13)
+        (1 - t)), t = ``resistor_tolerance``.
+    """
     _, vz_hi = zener_range(s)
     r9, r10, r11, r12, r13 = r
     return vz_hi / ((r9 + r10 + r11) * (1 - s["resistor_tolerance"])) + vz_hi / ((r12 + r13) * (1 - s["resistor_tolerance"]))
@@ -112,7 +175,23 @@ def divider_current(r, s: dict):
 def headroom_corners(r, s: dict) -> list:
     """How far each op-amp input sits below the supply, at every corner (V_cs = 0 for V_+, where it is
     nearest the supply; V_- does not depend on V_cs): 4 corners of (R12, R13), 4 of (R9 + R10, R11), the
-    lowest zener voltage and the bias current pushing each input up."""
+    lowest zener voltage and the bias current pushing each input up.
+
+    Parameters
+    ----------
+    r : tuple
+        (R9, R10, R11, R12, R13), ohm: floats, numpy arrays (broadcast together) or casadi symbols.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units); the zener's keys, ``input_bias`` (A) and
+        ``resistor_tolerance`` (fraction) are read.
+
+    Returns
+    -------
+    list
+        Eight headrooms, V (floats, numpy arrays or casadi expressions like ``r``): the first four of V_+ at the
+        (R12, R13) corners (-, -), (-, +), (+, -), (+, +), the last four of V_- at the (R9 + R10, R11) corners
+        in the same order. The least headroom is their minimum.
+    """
     vz_lo, _ = zener_range(s)
     ib, t = s["input_bias"], s["resistor_tolerance"]
     r9, r10, r11, r12, r13 = r
@@ -130,14 +209,48 @@ def margins(low, high, r7, s: dict) -> tuple:
     """The margins of trip voltages ``low`` and ``high`` (one corner's, or arrays of them) against the window:
     (low / (R7 (1 + t7)) / i_no_trip - 1, 1 - high / (R7 (1 - t7)) / i_must_trip), R7 at the end of its
     tolerance that is worst for a positive voltage. The one place the margin is written: :func:`verify` takes
-    it at the worst corners, the search's bounds and relaxation corner by corner (numpy, floats or casadi)."""
+    it at the worst corners, the search's bounds and relaxation corner by corner (numpy, floats or casadi).
+
+    Parameters
+    ----------
+    low : float or numpy.ndarray or casadi.SX
+        The lowest trip voltage V_cs (of one corner, or of many), V.
+    high : float or numpy.ndarray or casadi.SX
+        The highest trip voltage V_cs (of one corner, or of many), V.
+    r7 : float or numpy.ndarray or casadi.SX
+        The sense resistor R7, nominal, ohm.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units); ``r7_tolerance`` (fraction), ``i_no_trip`` and
+        ``i_must_trip`` (A) are read.
+
+    Returns
+    -------
+    tuple
+        (margin above ``i_no_trip``, margin below ``i_must_trip``), fractions of each limit (positive: inside the
+        window), broadcast over the arguments.
+    """
     return (low / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1,
             1 - high / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"]))
 
 
 def trip_currents(r7, r, s: dict):
     """(lowest, highest) trip current over every corner, R7's tolerance included (numpy or floats); a
-    negative trip voltage (a network that trips with no current) divides by the smallest R7."""
+    negative trip voltage (a network that trips with no current) divides by the smallest R7.
+
+    Parameters
+    ----------
+    r7 : float or numpy.ndarray
+        The sense resistor R7, nominal, ohm.
+    r : tuple
+        (R9, R10, R11, R12, R13), ohm: floats or numpy arrays (broadcast together with ``r7``).
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (lowest, highest) trip current over every corner, A (0-d arrays for one network).
+    """
     import numpy as np
     lows, highs = trip_voltage_corners(r, s)
     low, high = np.min(np.stack(lows), axis=0), np.max(np.stack(highs), axis=0)
@@ -146,7 +259,27 @@ def trip_currents(r7, r, s: dict):
 
 
 def verify(r7, r, s: dict) -> dict:
-    """Every figure of one network (or of arrays of networks) at its exact worst corners."""
+    """Every figure of one network (or of arrays of networks) at its exact worst corners.
+
+    Parameters
+    ----------
+    r7 : float or numpy.ndarray
+        The sense resistor R7, nominal, ohm.
+    r : tuple
+        (R9, R10, R11, R12, R13), ohm: floats or numpy arrays (broadcast together with ``r7``).
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+
+    Returns
+    -------
+    dict
+        numpy arrays (0-d for one network): "i_trip_min" and "i_trip_max", the lowest and highest trip current
+        over every corner, A; "margin_low" and "margin_high", the margins above ``i_no_trip`` and below
+        ``i_must_trip``, fractions; "headroom_min", the least headroom of either op-amp input, V;
+        "divider_current", the most current the dividers draw from the zener node, A; "ok", bool: both margins
+        at least ``min_margin``, the headroom at least ``input_headroom``, a positive lowest trip current and the
+        divider current at most ``divider_current_max``.
+    """
     import numpy as np
     i_lo, i_hi = trip_currents(r7, r, s)
     # the margins of the worst trip currents (a negative trip voltage takes R7's other end)
@@ -163,7 +296,16 @@ def corner_proof() -> dict:
     """sympy: {(expression, quantity): (degree of the numerator, of the denominator, denominator a sum of
     positive terms)} for V_cs, the trip current and both headrooms. All degrees at most 1 and positive
     denominators: each is monotone in each quantity over
-    the tolerance box, so the extremes lie at its vertices (the module's docstring)."""
+    the tolerance box, so the extremes lie at its vertices (the module's docstring).
+
+    Returns
+    -------
+    dict
+        {(expression, quantity): (int, int, bool)}: the expression ("V_cs", "I_trip", "headroom_plus" or
+        "headroom_minus"), a quantity it contains ("R7", "R9" .. "R13", "V_D1", "V_os", "I_p" or "I_m"), and
+        the degree in that quantity of the expression's numerator and of its denominator, and whether the
+        denominator's coefficients (as a polynomial in R7, R9 .. R13) are all positive.
+    """
     import sympy as sp
 
     r7, r9, r10, r11, r12, r13 = sp.symbols("R7 R9 R10 R11 R12 R13", positive=True)
@@ -185,6 +327,27 @@ def corner_proof() -> dict:
 
 
 def checked(spec: Mapping | None) -> Table:
+    """The ``[current_limiter]`` table checked: defaults filled in, every value in range, and the table's own
+    contradictions ruled out (the trip window, each resistor's range, room for ``min_margin``).
+
+    Parameters
+    ----------
+    spec : Mapping or None
+        The keys given, {key: value}, SI units (A, V, ohm, fractions); None: every default. A checked
+        ``[current_limiter]`` :class:`~handbook.design.common.Table` is returned as it is.
+
+    Returns
+    -------
+    Table
+        Every key of the table, checked, SI units.
+
+    Raises
+    ------
+    InputError
+        For an unknown key or a value of the wrong type or out of range; when ``i_no_trip`` is not below
+        ``i_must_trip``, a resistor's ``_min`` is above its ``_max`` or a free resistor's range holds no value of
+        its series; and when ``i_no_trip`` (1 + ``min_margin``) is not below ``i_must_trip`` (1 - ``min_margin``).
+    """
     if is_checked(TABLE, spec):  # checked once, where it was read
         return spec
     s = completed(TABLE, spec)
@@ -200,7 +363,26 @@ def checked(spec: Mapping | None) -> Table:
 
 
 def choices(s: dict, name: str) -> np.ndarray:
-    """The values a resistor may take: its pinned value, or its series within its range."""
+    """The values a resistor may take: its pinned value, or its series within its range.
+
+    Parameters
+    ----------
+    s : Mapping
+        The ``[current_limiter]`` table (SI units); ``name``, ``name_series``, ``name_min`` and ``name_max``
+        are read.
+    name : str
+        The resistor: "r7", "r9", "r10", "r11", "r12" or "r13".
+
+    Returns
+    -------
+    numpy.ndarray
+        Its values, ohm, ascending: the pinned value alone, or every value of its series in its range.
+
+    Raises
+    ------
+    InputError
+        When the resistor is not pinned and its range holds no value of its series.
+    """
     if s[name] is not None:
         return np.array([float(s[name])])
     values = series.values(s[f"{name}_series"], s[f"{name}_min"], s[f"{name}_max"])
@@ -213,7 +395,24 @@ def choices(s: dict, name: str) -> np.ndarray:
 
 
 def scores(r7: float, r: np.ndarray, s: dict) -> np.ndarray:
-    """Exact worst margin of each network (rows of R9..R13) with this R7; -inf where a headroom fails."""
+    """Exact worst margin of each network (rows of R9..R13) with this R7; -inf where a headroom fails.
+
+    Parameters
+    ----------
+    r7 : float
+        The sense resistor R7, nominal, ohm.
+    r : numpy.ndarray
+        Networks, shape (n, 5): one row (R9, R10, R11, R12, R13) per network, ohm.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (n,): each network's worst margin, min(margin above ``i_no_trip``, margin below ``i_must_trip``),
+        a fraction (``min_margin`` is not applied); -inf where the least headroom is below ``input_headroom``,
+        the lowest trip current is not positive or the divider current is above ``divider_current_max``.
+    """
     v = verify(r7, tuple(r.T), s)
     worst = np.minimum(v["margin_low"], v["margin_high"])
     ok = ((v["headroom_min"] >= s["input_headroom"] - 1e-12) & (v["i_trip_min"] > 0)
@@ -222,7 +421,24 @@ def scores(r7: float, r: np.ndarray, s: dict) -> np.ndarray:
 
 
 def best_headroom(s: dict) -> float:
-    """The largest least headroom any network of the ranges (or pins) allows: both inputs, worst corner."""
+    """The largest least headroom any network of the ranges (or pins) allows: both inputs, worst corner.
+
+    Parameters
+    ----------
+    s : Mapping
+        The ``[current_limiter]`` table (SI units); each divider resistor's pin or series range is used.
+
+    Returns
+    -------
+    float
+        The largest least headroom, V: the smaller of the two inputs' best, each the best over its resistors'
+        range ends (or pins).
+
+    Raises
+    ------
+    InputError
+        When a free divider resistor's range holds no value of its series (:func:`choices`).
+    """
     ends = [(v[0], v[-1]) for v in (choices(s, n) for n in DIVIDER)]
     best_plus = max(min(headroom_corners((1, 1, 1, r12, r13), s)[:4]) for r12, r13 in itertools.product(*ends[3:]))
     best_minus = max(min(headroom_corners((r9, r10, r11, 1, 1), s)[4:])

@@ -8,7 +8,7 @@ bias current; exact) the trip current stays inside [i_no_trip (1 + m), i_must_tr
 
 Solution. R7 comes first: IPOPT minimises ln R7 over the continuous relaxation of all six resistors, a
 lower bound for every series design. Then, for each series R7 from that bound up, a branch and bound
-(:mod:`.branch_bound`, IPOPT on every node's relaxation) maximises the worst margin over the five divider
+(:mod:`handbook.design.branch_bound`, IPOPT on every node's relaxation) maximises the worst margin over the five divider
 resistors; the first R7 whose best network reaches ``min_margin`` is the answer. With four free divider
 resistors on E96 there are about 10^11 networks per R7, far too many to enumerate; on E6/E12 dividers the
 tests and ``tools/benchmark.py`` check that this search finds exactly what enumeration finds. The chosen
@@ -78,6 +78,8 @@ def design(spec: dict | None = None, leaf_size: int = LEAF_SIZE) -> LimiterResul
 
     Raises
     ------
+    InputError
+        When ``spec`` is invalid (:func:`~handbook.design.limiter.model.checked`).
     Infeasible
         When no network of the series meets the spec; its message says what can be met.
     """
@@ -102,7 +104,21 @@ def design(spec: dict | None = None, leaf_size: int = LEAF_SIZE) -> LimiterResul
 
 
 def warnings(r: dict, s: dict) -> list[str]:
-    """What an engineer should know about a design that meets the spec."""
+    """What an engineer should know about a design that meets the spec.
+
+    Parameters
+    ----------
+    r : dict
+        The design's figures, keyed as :class:`LimiterResult`'s fields; "i_trip_max" (A) and "p_r7" (W) are read.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units); ``ic`` and ``r7_power_rating`` (W) are read.
+
+    Returns
+    -------
+    list of str
+        One sentence per warning, none when there is nothing to say: the highest trip current above the IC's
+        own minimum output limit (:data:`IC_LIMIT_MIN`, A), R7's loss above its rating.
+    """
     out = []
     limit = IC_LIMIT_MIN[s["ic"]]
     if r["i_trip_max"] > limit:
@@ -115,7 +131,25 @@ def warnings(r: dict, s: dict) -> list[str]:
 
 
 def judge(r7: float, network, s: dict) -> dict:
-    """Any limiter (the note's, say) by the same exact checks as a design: trip currents, margins, headroom."""
+    """Any limiter (the note's, say) by the same exact checks as a design: trip currents, margins, headroom.
+
+    Parameters
+    ----------
+    r7 : float
+        The sense resistor R7, nominal, ohm.
+    network : tuple of float
+        (R9, R10, R11, R12, R13), nominal, ohm.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+
+    Returns
+    -------
+    dict
+        "i_trip_min" and "i_trip_max", the lowest and highest trip current over every corner, A; "margin_low"
+        and "margin_high", the margins above ``i_no_trip`` and below ``i_must_trip``, fractions; "headroom_min",
+        the least headroom of either op-amp input, V (all floats); "meets", bool: both margins at least
+        ``min_margin`` and the headroom at least ``input_headroom``.
+    """
     v = net.verify(r7, network, s)
     out = {k: float(v[k]) for k in ("i_trip_min", "i_trip_max", "margin_low", "margin_high", "headroom_min")}
     out["meets"] = bool(min(out["margin_low"], out["margin_high"]) >= s["min_margin"] - 1e-12
