@@ -133,8 +133,8 @@ def shown_value(v, unit: str) -> str:
     not designed (None), the warnings joined ('none' when there are none)."""
     if v is None:
         return "—"
-    if isinstance(v, (tuple, list)):
-        return "; ".join(map(str, v)) if v else "none"
+    if isinstance(v, (tuple, list)):  # warnings (text), or values in the unit (the R7 values left unsettled)
+        return "; ".join(shown_value(x, unit) if isinstance(x, float) else str(x) for x in v) if v else "none"
     if unit == "%":
         return f"{v:.2%}"
     if unit == "C":

@@ -120,3 +120,23 @@ def test_a_relaxation_ipopt_calls_infeasible_is_not_taken_as_proof():
     expected = enumerate_limiter(spec)
     assert expected is not None and expected[0] == pytest.approx(0.027)
     assert limiter.design(spec).r7 == pytest.approx(expected[0])
+
+
+def test_a_node_ipopt_calls_infeasible_is_not_dropped():
+    """Issue 18's spec: IPOPT reports the relaxation of R7 = 0.698 ohm infeasible, yet the audit's network
+    (R9..R13 = 402, 59 000, 95 300, 8 660 (pinned), 17 800 ohm) meets it with margins 5.04 % / 9.98 % against 5 %.
+    A box IPOPT calls infeasible is bounded by its vertices instead of dropped, so the design finds 0.698 ohm
+    (or smaller), and what it returns holds at every corner of the oracle."""
+    spec = dict(i_no_trip=1.5375553447469856, i_must_trip=3.759833528645647, min_margin=0.05, resistor_tolerance=0.005,
+                r7_tolerance=0.02, zener_voltage=20.454639911244172, zener_tolerance=0.02, zener_tc=0.01899320811016074,
+                temp_span=59.00419989365312, offset=0.032682535995104574, input_bias=5e-06, input_offset_current=5e-06,
+                divider_current_max=0.0009831299364458264, input_headroom=0.8931756024241944, r7_series="E96",
+                r7_min=0.6950642965952302, r7_max=3.4921242780091024, r12=8660.0,
+                **{f"r{n}_series": "E48" for n in (9, 10, 11, 12, 13)})
+    audit = limiter_corners(0.698, (402.0, 59000.0, 95300.0, 8660.0, 17800.0), limiter.checked(spec))
+    assert audit[0] >= spec["i_no_trip"] * 1.05 and audit[1] <= spec["i_must_trip"] * 0.95  # the audit's network holds
+    r = limiter.design(spec)
+    assert r.r7 <= 0.698 + 1e-12
+    lo, hi, head, i_div = limiter_corners(r.r7, r.network, r.spec)
+    assert lo >= spec["i_no_trip"] * 1.05 * (1 - 1e-9) and hi <= spec["i_must_trip"] * 0.95 * (1 + 1e-9)
+    assert head >= spec["input_headroom"] - 1e-9 and i_div <= spec["divider_current_max"] * (1 + 1e-9)

@@ -18,12 +18,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ...core.units import eng
 from ...sources.an94002 import circuit as an94002
 from ..common import Result, reported
 from . import model as net
 from .explain import explain
 from .model import TABLE, checked
-from .search import LEAF_SIZE, solve
+from .search import GAP, LEAF_SIZE, solve
 
 #: the motor ICs' own output current limits, minimum (datasheet_facts: TDA5144 / TDA5143T datasheets)
 IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
@@ -47,12 +48,12 @@ class LimiterResult(Result):
     headroom_min: float = reported('V', 'least op-amp input distance below the supply')
     divider_current: float = reported('A', 'current the dividers draw from the zener node')
     margin_bound: float = reported('%', 'no network with this R7 has a worst margin above')  # proven by the search
+    unproven: tuple = reported('ohm', 'smaller R7 values the search left unsettled (node limit)')
     binding: str = reported('', 'binding')
     warnings: tuple = reported('', 'warnings')
     r7_relaxed: float
     nodes: int
     r7_tried: int
-    unproven: tuple  # smaller R7 values whose search stopped at its node limit without finding a network
 
     table = TABLE
 
@@ -117,7 +118,8 @@ def warnings(r: dict, s: dict) -> list[str]:
     -------
     list of str
         One sentence per warning, none when there is nothing to say: the highest trip current above the IC's
-        own minimum output limit (:data:`IC_LIMIT_MIN`, A), R7's loss above its rating.
+        own minimum output limit (:data:`IC_LIMIT_MIN`, A), R7's loss above its rating, an R7 or a tie-break the
+        search did not settle (its node limit).
     """
     out = []
     limit = IC_LIMIT_MIN[s["ic"]]
@@ -127,6 +129,14 @@ def warnings(r: dict, s: dict) -> list[str]:
     if r["p_r7"] > s["r7_power_rating"]:
         out.append(f"R7 dissipates up to {r['p_r7']:.3g} W while the limiter holds a stalled motor at the highest "
                    f"trip current: more than its {s['r7_power_rating']:g} W rating (r7_power_rating)")
+    if r["unproven"]:
+        out.append(f"not proven the smallest R7: the search for R7 = "
+                   f"{', '.join(eng(v, 'Ω', 3) for v in r['unproven'])} stopped at its node limit without a network, "
+                   "so a network with a smaller R7 may exist")
+    worst = min(r["margin_low"], r["margin_high"])
+    if r["margin_bound"] - worst > GAP + 1e-12:
+        out.append(f"the worst margin {worst:.2%} is not proven the best for this R7: the search stopped at its node "
+                   f"limit with networks of up to {r['margin_bound']:.2%} not ruled out")
     return out
 
 

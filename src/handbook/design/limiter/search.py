@@ -65,8 +65,27 @@ class Relaxation:
         self.solver, self.warm = _solvers()
 
     def solve(self, lb, ub, x0, weight: float, t_min: float = -10.0, warm: dict | None = None):
-        """(x, status, state) of the box lb..ub (resistor values), or None when IPOPT proves it infeasible.
-        ``warm``: a parent's state (its x and multipliers)."""
+        """(x, status, state) of the box lb..ub (resistor values), or None when IPOPT reports it infeasible
+        (a local verdict: the callers bound such a box by :func:`vertex_bound` before dropping it).
+
+        Parameters
+        ----------
+        lb, ub : array of float
+            The box: lowest and highest R7, R9..R13, ohm.
+        x0 : array of float
+            The starting point (ln R7, ln R9 .. ln R13, t).
+        weight : float
+            1: minimise ln R7 (t >= ``t_min``); 0: maximise the worst margin t.
+        t_min : float
+            The least worst margin, fraction.
+        warm : dict or None
+            A parent's state (its x and multipliers) for a warm start.
+
+        Returns
+        -------
+        tuple or None
+            (x: ln R7, ln R9 .. ln R13 and t; IPOPT's return status; the state for a child's warm start).
+        """
         solver = self.solver if warm is None else self.warm
         args = dict(x0=x0, p=[weight, *self.q], lbx=[*np.log(lb), t_min], ubx=[*np.log(ub), 10.0], lbg=0, ubg=np.inf)
         if warm is not None:
@@ -92,7 +111,26 @@ def _root(s: dict, relax: Relaxation, lists: list) -> float | None:
 
 def polish(r7: float, network: tuple, s: dict, lists: list, rounds: int = 8) -> tuple[tuple, float]:
     """Local search after the branch and bound's node budget: each divider resistor one series step either
-    way, R9 ten steps, every combination evaluated exactly; repeated while it improves the worst margin."""
+    way, R9 ten steps, every combination evaluated exactly; repeated while it improves the worst margin.
+
+    Parameters
+    ----------
+    r7 : float
+        The sense resistor, ohm.
+    network : tuple of float
+        R9..R13 to start from, ohm (series values of ``lists``).
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+    lists : list of array of float
+        Each resistor's series values, R7 first, ohm.
+    rounds : int
+        At most this many improving steps.
+
+    Returns
+    -------
+    tuple
+        (the best network found, R9..R13 in ohm; its worst margin, fraction).
+    """
     idx = [int(np.searchsorted(v, x)) for v, x in zip(lists[1:], network)]
     best = float(scores(r7, np.array([network]), s)[0])
     for _ in range(rounds):
@@ -116,8 +154,9 @@ def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold:
                           warm=state)
         if res is None and state is not None:  # a warm start that fails is repeated cold before it prunes
             res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0)
-        if res is None:
-            return None
+        if res is None:  # IPOPT's "infeasible" is a local verdict, not a proof: the box is bounded by its vertices
+            bound = vertex_bound(r7, lb, ub, s)
+            return None if bound == -np.inf else (bound, np.sqrt(lb * ub), None)
         x, status, new_state = res
         if status not in ("Solve_Succeeded", "Solved_To_Acceptable_Level"):
             return np.inf, np.sqrt(lb * ub), None  # cannot bound this box: keep it and split it
@@ -134,6 +173,21 @@ def vertex_bound(r7: float, lb, ub, s: dict) -> float:
     resistor (the corner proof), so its largest value over the box is at a vertex; the worst margin, a
     minimum over corners, is at most the smallest of those maxima. -inf when some corner's headroom is
     below the limit at every vertex (no network in the box can meet it).
+
+    Parameters
+    ----------
+    r7 : float
+        The sense resistor, ohm.
+    lb, ub : array of float
+        The box: lowest and highest R9..R13, ohm.
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+
+    Returns
+    -------
+    float
+        The bound on the worst margin, fraction; -inf when no network of the box meets the headroom or the
+        divider current.
     """
     vert = np.array(list(itertools.product(*zip(lb, ub)))).T
     lows, highs = net.trip_voltage_corners(tuple(vert), s)
@@ -148,7 +202,22 @@ def solve(s: dict, leaf_size: int = LEAF_SIZE) -> dict:
     """The smallest feasible series R7 and, with it, the network of the largest worst margin: {r7, network,
     outcome, r7_relaxed, tried, unproven} (r7 None when there is none). Each R7 from the relaxation's bound
     up gets its own branch and bound; the first that finds a network is the smallest (a search that stops at
-    its node limit without one is recorded in ``unproven``)."""
+    its node limit without one is recorded in ``unproven``).
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+    leaf_size : int
+        A node holding at most this many networks is evaluated whole.
+
+    Returns
+    -------
+    dict
+        "r7" (ohm, or None), "network" (R9..R13, ohm), "outcome" (the branch and bound's
+        :class:`~handbook.design.branch_bound.Outcome`), "r7_relaxed" (the relaxation's R7, ohm), "tried" (R7 values
+        searched), "unproven" (smaller R7 values, ohm, whose search stopped at its node limit).
+    """
     found = {"r7": None, "network": None, "outcome": None, "r7_relaxed": None, "tried": 0, "unproven": ()}
     if best_headroom(s) < s["input_headroom"]:  # exact, and cheap: no network can meet the headroom
         return found
@@ -171,7 +240,19 @@ def solve(s: dict, leaf_size: int = LEAF_SIZE) -> dict:
 
 def enumerate_series(spec: dict):
     """Exhaustive search (every network and every R7; for reduced series only): (r7, network, worst margin)
-    or None. Used by the benchmark beside :func:`design`."""
+    or None. Used by the benchmark beside :func:`design`.
+
+    Parameters
+    ----------
+    spec : Mapping
+        The ``[current_limiter]`` table.
+
+    Returns
+    -------
+    tuple or None
+        (the smallest R7 with a network, ohm; the network of the largest worst margin, R9..R13 in ohm; that margin,
+        fraction), or None when no network of the series meets the spec.
+    """
     s = checked(spec)
     lists = [choices(s, name) for name in RESISTORS]
     grid = np.array(np.meshgrid(*lists[1:], indexing="ij")).reshape(5, -1).T
