@@ -125,8 +125,8 @@ def test_a_relaxation_ipopt_calls_infeasible_is_not_taken_as_proof():
 def test_a_node_ipopt_calls_infeasible_is_not_dropped():
     """Issue 18's spec: IPOPT reports the relaxation of R7 = 0.698 ohm infeasible, yet the audit's network
     (R9..R13 = 402, 59 000, 95 300, 8 660 (pinned), 17 800 ohm) meets it with margins 5.04 % / 9.98 % against 5 %.
-    A box IPOPT calls infeasible is bounded by its vertices instead of dropped, so the design finds 0.698 ohm
-    (or smaller), and what it returns holds at every corner of the oracle."""
+    A box IPOPT calls infeasible from its middle is tried again from its corners before it is dropped, so the
+    design finds 0.698 ohm (or smaller), and what it returns holds at every corner of the oracle."""
     spec = dict(i_no_trip=1.5375553447469856, i_must_trip=3.759833528645647, min_margin=0.05, resistor_tolerance=0.005,
                 r7_tolerance=0.02, zener_voltage=20.454639911244172, zener_tolerance=0.02, zener_tc=0.01899320811016074,
                 temp_span=59.00419989365312, offset=0.032682535995104574, input_bias=5e-06, input_offset_current=5e-06,

@@ -27,6 +27,9 @@ from .model import RESISTORS, best_headroom, checked, choices, scores
 GAP = 2.5e-3
 #: a node holding at most this many networks is evaluated whole (about the cost of one IPOPT solve)
 LEAF_SIZE = 2000
+#: relaxations spent on one R7 with no network found yet before it is given up as unsettled (reported in
+#: ``unproven``, and warned about)
+MAX_NODES_UNSOLVED = 3000
 
 
 #: the spec values the relaxation takes as parameters (one NLP, built once per process, serves every spec)
@@ -147,23 +150,28 @@ def polish(r7: float, network: tuple, s: dict, lists: list, rounds: int = 8) -> 
 
 
 def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold: float, max_nodes: int = 40,
-                  leaf_size: int = LEAF_SIZE):
+                  leaf_size: int = LEAF_SIZE, max_nodes_unsolved: int = MAX_NODES_UNSOLVED):
     """Branch and bound over R9..R13 with R7 fixed: the network with the largest worst margin."""
     def relaxed(lb, ub, state):
         res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0,
                           warm=state)
         if res is None and state is not None:  # a warm start that fails is repeated cold before it prunes
             res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0)
-        if res is None:  # IPOPT's "infeasible" is a local verdict, not a proof: the box is bounded by its vertices
-            bound = vertex_bound(r7, lb, ub, s)
-            return None if bound == -np.inf else (bound, np.sqrt(lb * ub), None)
+        if res is None:  # IPOPT's "infeasible" is a local verdict: tried again from the box's two extreme corners
+            for x0 in (lb, ub):
+                res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(x0), 0.0], 0.0)
+                if res is not None:
+                    break
+        if res is None:
+            return None
         x, status, new_state = res
         if status not in ("Solve_Succeeded", "Solved_To_Acceptable_Level"):
             return np.inf, np.sqrt(lb * ub), None  # cannot bound this box: keep it and split it
         return float(x[6]) + 1e-9, np.exp(x[1:6]), new_state
 
     return branch_bound.search(lists[1:], relaxed, lambda c: scores(r7, c, s), threshold, gap=GAP, scan=0,
-                               max_nodes=max_nodes, leaf_size=leaf_size, cheap_bound=lambda lb, ub: vertex_bound(r7, lb, ub, s))
+                               max_nodes=max_nodes, max_nodes_unsolved=max_nodes_unsolved, leaf_size=leaf_size,
+                               cheap_bound=lambda lb, ub: vertex_bound(r7, lb, ub, s))
 
 
 def vertex_bound(r7: float, lb, ub, s: dict) -> float:
