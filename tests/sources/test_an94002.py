@@ -237,7 +237,12 @@ def test_cap_ti_waveform_times():
 def test_12nc_codes_that_disagree_with_the_printed_values():
     bad = {ref for ref, _, value, _, _, _, nc in note.PARTS
            if value and note.decode_12nc(nc) is not None and abs(note.decode_12nc(nc) - value) > 1e-6 * value}
-    assert bad == {"R1", "R14", "C6"}
+    assert bad == {"R14", "C6"}
+    # the decade rule by hand: two digits, then 8 = x 0.1, 9 = x 1, n = x 10^n of the family's base unit
+    assert note.decode_12nc("2322 181 53229") == 22.0 and note.decode_12nc("2322 181 53681") == 680.0
+    assert note.decode_12nc("2322 181 53108") == pytest.approx(1.0) and note.decode_12nc("2322 181 53393") == 39e3
+    assert note.decode_12nc("2222 037 68109") == pytest.approx(10e-6)  # the electrolytics' base unit is the µF
+    assert note.decode_12nc("2222 370 21183") == pytest.approx(18e-9) and note.decode_12nc("2322 181 53") is None
 
 
 def test_parts_rows_compare_print_code_and_calculation():
@@ -245,11 +250,11 @@ def test_parts_rows_compare_print_code_and_calculation():
     assert list(rows) == [ref for ref, *_ in note.PARTS]
     assert all(len(r) == len(note.PARTS_HEADER) for r in rows.values())
     differs = {ref for ref, r in rows.items() if "**differs**" in r[6]}
-    assert differs == {"R1", "R14", "C6"}
-    # decoded by hand: ...53229 = 22 x 0.1 ohm, ...53701 = 70 x 10 ohm, ...17224 = 22 x 10^4 pF
-    assert rows["R1"][6].startswith("2.2 Ω") and rows["R14"][6].startswith("700 Ω")
+    assert differs == {"R14", "C6"}
+    # decoded by hand: ...53229 = 22 x 1 ohm, ...53701 = 70 x 10 ohm, ...17224 = 22 x 10^4 pF, ...68109 = 10 x 1 µF
+    assert rows["R1"][6] == "22 Ω" and rows["R14"][6].startswith("700 Ω")
     assert rows["C6"][6].startswith("220 nF") and rows["C5"][6] == "220 nF"
-    assert rows["C1"][6] == "" and rows["R7"][6] == ""  # electrolytic code, TBD value
+    assert rows["C1"][6] == "10 µF" and rows["R7"][6] == ""  # TBD value
     assert rows["R1"][2] == "22 Ω" and rows["C1"][2] == "10 µF" and rows["R10"][3] == "1%"
     # R7: 0.8 V / 1 A and 0.1 V / 1 A; R9: 0.1 V x 21.6 k / 8.1 V = 266.7 ohm, nearest E96 267 ohm
     assert rows["R7"][8] == "800 mΩ (O1, 0.8 V) or 100 mΩ (O2, 100 mV)"

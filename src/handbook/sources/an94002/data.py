@@ -136,10 +136,12 @@ ERRATA = (
                 "the one-transistor limiter needs 'about 1 V' (section 2) or 'about 0.8 V' (2.3)",
                 "both are rough figures for the same V_be; the BC557 datasheet gives 0.55 to 0.70 V at 2 mA",
                 "size R7 from the measured limit, not from either figure"),
-    TextErratum("an94002-t-12nc", f"{NAME} 4, parts list", "three 12NC codes decode to other values than printed",
-                "R1 ...53229 is 2.2 ohm (printed 22 ohm); R14 ...53701 is 700 ohm, not an E-series value (printed "
-                "750 ohm, code ...751); C6 ...17224 is 220 nF, the code of C5/C7/C8 (printed 10 nF)",
-                "order by value and check the code: the wrong C6 would make the watchdog 22 times longer"),
+    TextErratum("an94002-t-12nc", f"{NAME} 4, parts list", "two 12NC codes decode to other values than printed",
+                "R14 ...53701 is 700 ohm by the decade rule, not an E-series value (printed 750 ohm, whose code is "
+                "...751: a one-digit slip, possibly the OCR's); C6 ...17224 is 220 nF, the code of C5/C7/C8 (printed "
+                "10 nF), but the OCR's code column holds 11 codes for the 10 capacitors, so which code belongs to C6 "
+                "is uncertain. R1 ...53229 is 22 ohm as printed (9 is the decade of 10 to 99 ohm)",
+                "order by value and check the code: a C6 of 220 nF would make the watchdog 22 times longer"),
     TextErratum("an94002-t-cadcd", f"{NAME} 2.1.2", "'CAD-CD' and 'CAD-DC' for CAP-CD and CAP-DC", "typographical",
                 "none"),
 )

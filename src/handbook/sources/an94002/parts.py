@@ -67,10 +67,12 @@ PARTS_HEADER = ["ref", "option", "value", "tol.", "type", "12NC", "12NC decodes 
 
 
 def decode_12nc(code: str) -> float | None:
-    """Value encoded in the last three digits of a Philips 12NC: two digits and a decade.
+    """Value encoded in the last three digits of a Philips 12NC: two digits and a decade digit.
 
-    For the SFR25 resistors the decade digit 9 means x 0.1 and 8 x 0.01 (ohms); for the MKT 370
-    capacitors the code is in picofarads. Electrolytics (RSM 037) use another scheme: None.
+    The decade digit counts in the family's base unit (ohm for the SFR25 resistors, pF for the MKT 370
+    capacitors, µF for the RSM 037 electrolytics): 8 means 1 to 9.9 (the two digits x 0.1), 9 means 10 to 99
+    (x 1), 1 means 100 to 990 (x 10), 2 x 100 and so on. One rule decodes the whole list: R1 "...53229" is
+    22 ohm and the electrolytics' "...68109" 10 µF, as printed; the list itself proves the rule.
 
     Parameters
     ----------
@@ -80,16 +82,15 @@ def decode_12nc(code: str) -> float | None:
     Returns
     -------
     float or None
-        The value, ohm for a resistor and F for an MKT 370 capacitor; None for an electrolytic or a code
-        that is not 12 digits long.
+        The value, ohm for a resistor and F for a capacitor; None for a code that is not 12 digits long.
     """
     digits = code.replace(" ", "")
-    if len(digits) != 12 or digits.startswith("2222037"):
+    if len(digits) != 12:
         return None
     mant, dec = int(digits[-3:-1]), int(digits[-1])
-    mult = {9: 0.1, 8: 0.01}.get(dec, 10.0 ** dec)
-    value = mant * mult
-    return value * 1e-12 if digits.startswith("2222370") else value
+    value = mant * {9: 1.0, 8: 0.1}.get(dec, 10.0 ** dec)
+    base = 1e-12 if digits.startswith("2222370") else 1e-6 if digits.startswith("2222037") else 1.0
+    return value * base
 
 
 def _symbol(unit: str) -> str:
