@@ -9,6 +9,7 @@ The longest units go out first, so that neither worker is left with a long one a
 (xdist's own ``--dist loadgroup`` marks do not take under pytest 9.2, whose node ids moved from
 ``_nodeid`` to ``_id``; a scheduler of our own does not depend on that.)
 """
+import pytest
 
 #: test files kept on one worker because their module-scoped fixture is expensive to build twice
 TOGETHER = ("tests/test_browser.py", "tests/design/converter/", "tests/report/test_plots.py")
@@ -26,9 +27,15 @@ def _unit(nodeid: str) -> str:
 
 
 def _rank(unit: str) -> int:
-    return next((i for i, prefix in enumerate(FIRST) if unit.startswith(prefix)), len(FIRST))
+    """``FIRST`` in its order, then the notebooks (ten to twenty seconds each), then every other test (mostly
+    short: they fill in at the end, so neither worker waits long for the other)."""
+    first = next((i for i, prefix in enumerate(FIRST) if unit.startswith(prefix)), None)
+    if first is not None:
+        return first
+    return len(FIRST) + (0 if unit.endswith(".ipynb") else 1)
 
 
+@pytest.hookimpl(optionalhook=True)  # a run without xdist (-p no:xdist) does not know the hook
 def pytest_xdist_make_scheduler(config, log):
     from xdist.scheduler import LoadScopeScheduling
 

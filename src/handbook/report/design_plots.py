@@ -7,7 +7,7 @@ import numpy as np
 from ..core import series
 from ..design import class_d, commutation, limiter
 from ..design.class_d import model
-from ..design.limiter import model as limiter_network
+from ..design.limiter import model as limiter_model
 from ..sources.an94002 import circuit as an94002
 from .figures import axes
 
@@ -39,7 +39,7 @@ def limiter_design_space(result, marks: dict | None = None):
     r9s = np.array(series.values(s["r9_series"], max(s["r9_min"], result.r9 / 30), min(s["r9_max"], result.r9 * 30)))
     R7, R9 = np.meshgrid(r7s, r9s, indexing="ij")
     others = [np.full(R9.shape, x) for x in result.network[1:]]
-    v = limiter_network.verify(R7, (R9, *others), s)
+    v = limiter_model.verify(R7, (R9, *others), s)
     worst = np.minimum(v["margin_low"], v["margin_high"])
     fig, ax = axes("R9", "R7", "Ω", "Ω", xlog=True, ylog=True)
     pc = ax.pcolormesh(R9, R7, np.clip(worst, -1, 0.2), cmap="RdYlGn", vmin=-1, vmax=0.2, shading="nearest")

@@ -17,6 +17,7 @@ import math
 import casadi as ca
 import numpy as np
 
+from ...core import InputError
 from .. import branch_bound
 from ..solvers import IPOPT_OPTIONS
 from . import model as net
@@ -30,6 +31,8 @@ LEAF_SIZE = 2000
 #: relaxations spent on one R7 with no network found yet before it is given up as unsettled (reported in
 #: ``unproven``, and warned about)
 MAX_NODES_UNSOLVED = 3000
+#: the most divider networks :func:`enumerate_series` evaluates (a few hundred MB of numpy arrays)
+ENUMERATE_MAX = 2_000_000
 
 
 #: the spec values the relaxation takes as parameters (one NLP, built once per process, serves every spec)
@@ -260,9 +263,18 @@ def enumerate_series(spec: dict):
     tuple or None
         (the smallest R7 with a network, ohm; the network of the largest worst margin, R9..R13 in ohm; that margin,
         fraction), or None when no network of the series meets the spec.
+
+    Raises
+    ------
+    InputError
+        When the series hold more than :data:`ENUMERATE_MAX` divider networks.
     """
     s = checked(spec)
     lists = [choices(s, name) for name in RESISTORS]
+    networks = math.prod(len(v) for v in lists[1:])
+    if networks > ENUMERATE_MAX:
+        raise InputError(f"{networks:,} divider networks are too many to enumerate (at most {ENUMERATE_MAX:,}): pin "
+                         "resistors or narrow their ranges or series (limiter.design searches any size)")
     grid = np.array(np.meshgrid(*lists[1:], indexing="ij")).reshape(5, -1).T
     for r7 in lists[0]:
         sc = scores(float(r7), grid, s)

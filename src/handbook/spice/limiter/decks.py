@@ -227,7 +227,7 @@ def corner_defaults() -> dict:
 
 def trip_voltage(p: dict) -> float:
     """V_cs at the trip with the offset and both bias currents: eq 13 (an94002.v_cs_trip) plus the bias terms
-    of the design's node equation, I_+ R12 - I_- ((R9 + R10) || R11) / A (limiter_network)."""
+    of the design's node equation, I_+ R12 - I_- ((R9 + R10) || R11) / A (handbook.design.limiter.model)."""
     network = (p["r9"], p["r10"], p["r11"], p["r12"], p["r13"])
     a = an94002.factor_a(p["r12"], p["r13"])
     r_m = (p["r9"] + p["r10"]) * p["r11"] / (p["r9"] + p["r10"] + p["r11"])
@@ -236,8 +236,8 @@ def trip_voltage(p: dict) -> float:
 
 def corner_equations(p: dict) -> dict:
     """The corner's figures from the project's equations: least headroom of V+ (eq 11 with the bias, as the
-    design's limiter_network computes it), the sense voltage at which V+ comes back to 2 V below the supply,
-    and the trip eq 13 with the offset and bias (limiter_network's node equation)."""
+    design's limiter model computes it), the sense voltage at which V+ comes back to 2 V below the supply,
+    and the trip eq 13 with the offset and bias (the limiter model's node equation)."""
     from ...design.limiter import model as net
 
     s = p["spec"]
@@ -260,7 +260,7 @@ def opamp_corner(p: dict | None = None) -> Circuit:
     back = [f".meas tran i_back FIND i(VAM) WHEN v(out)={mid:.6g} RISE=1"]
     checks = (
         Check("limiter-corner-headroom", "V_s − V_+ at V_cs = 0, least-headroom corner", "V", eq["design_head"],
-              "head_p", 0.002, "the design's worst-case headroom (limiter_network) at the same corner; SPICE keeps "
+              "head_p", 0.002, "the design's worst-case headroom (its limiter model) at the same corner; SPICE keeps "
               "the zener's dynamic resistance (15 ohm) at its real current, about 0.05 % of the headroom: +-0.2 %, "
               "as the design confirmation allows for the same effect"),
         Check("limiter-corner-back", "motor current where V+ is back 2 V below the supply (output rises)", "A",
