@@ -33,7 +33,7 @@ def test_input_error_is_a_value_error():
     (3.3, "Ω", "3.3 Ω"),
     (1e-3, "s", "1 ms"),
     (15e12, "Hz", "15 THz"),
-    (1e-16, "F", "0.1 fF"),  # below the smallest prefix: femto
+    (1e-16, "F", "100 aF"),  # atto, as core.units (and the book's axes) write it
     (999.99, "Hz", "1 kHz"),  # rounds up to 1.000 kHz at 4 figures: shown as 1 kHz, not 1000 Hz
     (999.9, "Hz", "999.9 Hz"),
     (123456, "V", "123.5 kV"),  # 4 significant figures

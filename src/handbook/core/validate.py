@@ -6,6 +6,8 @@ import numbers
 
 import numpy as np
 
+from .units import eng
+
 
 class InputError(ValueError):
     """Bad input: the message names the field, the value given and the accepted range."""
@@ -14,8 +16,6 @@ class InputError(ValueError):
 #: SI units shown with an engineering prefix in messages (others as plain numbers: rpm, K, C, A/m^2, ...)
 _PREFIXED = {"F": "F", "A": "A", "V": "V", "Hz": "Hz", "H": "H", "s": "s", "m": "m", "T": "T", "W": "W",
              "ohm": "Ω", "Ω": "Ω", "J": "J"}
-_PREFIXES = ((1e12, "T"), (1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n"),
-             (1e-12, "p"), (1e-15, "f"))
 
 
 def quantity(value, unit: str = "") -> str:
@@ -36,9 +36,8 @@ def quantity(value, unit: str = "") -> str:
         The value as the message shows it.
     """
     v = float(value)
-    if unit in _PREFIXED and v != 0 and math.isfinite(v):
-        scale, prefix = next(((f, p) for f, p in _PREFIXES if abs(v) >= f * (1 - 5e-5)), _PREFIXES[-1])
-        return f"{v / scale:.4g} {prefix}{_PREFIXED[unit]}"
+    if unit in _PREFIXED and v != 0 and math.isfinite(v):  # the one formatter (core.units), with a plain minus
+        return eng(v, _PREFIXED[unit]).replace("\N{MINUS SIGN}", "-")
     text = f"{v:,.0f}" if 1e4 <= abs(v) < 1e15 and v == round(v) else f"{v:.4g}"  # 1,000,000 rpm, not 1e+06
     return text + ("" if unit in ("", "1") else f" {_PREFIXED.get(unit, unit)}")
 
