@@ -7,7 +7,6 @@ from .circuit import b_for, factor_a, r10_for, supply_worst_case
 from .data import FACTS, NAME
 
 #: BZX79-C8V2 V_Z minimum at 5 mA (datasheet facts: 7.7 to 8.7 V)
-BZX79_VZ_MIN = FACTS["bzx79_vz"].value[0]
 
 T1, OP, Z = "one_transistor", "supply", "zener"
 
@@ -98,9 +97,10 @@ def build() -> list[Claim]:
               printed=Printed("28", "%"), compute=lambda p: 1.11 * 1.1 * 1.05 - 1, reason="1.11 x 1.1 x 1.05 = 1.2821",
               chapter=OP),
         Claim(id="an93008-vz-min", where=f"{NAME} 2.2", quantity="lowest zener voltage 0.95 x 8.2 V", printed=VZ_MIN,
-              compute=lambda p: BZX79_VZ_MIN, basis="BZX79-C8V2 datasheet",
-              reason="7.7 V is the BZX79-C8V2's datasheet minimum (V_Z 7.7 to 8.7 V at 5 mA, datasheet facts), so the "
-                     "value is right; the 0.95 x 8.2 V written beside it is 7.79 V: the part spreads +-6.1 %, not +-5 %",
+              compute=lambda p: 0.95 * 8.2, truncated=True,
+              reason="0.95 x 8.2 V = 7.79 V, printed 7.7 V: truncated to one decimal (AN94002 prints 7.79 V for the "
+                     "same product). 7.7 V is also the BZX79-C8V2's datasheet minimum (V_Z 7.7 to 8.7 V at 5 mA, "
+                     "datasheet facts), the value the level shift needs: the part spreads +-6.1 %, not +-5 %",
               chapter=Z, consequence="none for the level shift, which the note sized at the right 7.7 V; the +-5 % "
                                      "written beside it understates the zener's share of the trip tolerance (see "
                                      "an93008-zener-spread)"),
