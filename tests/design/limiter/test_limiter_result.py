@@ -61,3 +61,16 @@ def test_monte_carlo_inside_the_corners_and_the_notes_design_outside():
     note = limiter.monte_carlo_trip(0.075, (267.0, 5.6e3, 16e3, 5.6e3, 16e3), r.spec, n=50_000, seed=1)
     assert note["yield"] < 0.85 and note["i_min"] < 0.5 and note["i_max"] > 2.0
     assert math.isfinite(note["i_p999"])
+
+
+def test_judge_holds_a_network_to_everything_a_design_must_meet():
+    """The default design judged against its own spec meets it; with divider_current_max just below what its
+    dividers draw (V_D1 / (R9 + R10 + R11) + V_D1 / (R12 + R13) at the highest zener voltage, by the oracle) it no
+    longer does, though margins and headroom are unchanged."""
+    r = limiter.design({})
+    assert limiter.judge(r.r7, r.network, r.spec)["meets"]
+    *_, i_div = limiter_corners(r.r7, r.network, r.spec)
+    tight = limiter.checked({**r.spec, "divider_current_max": 0.99 * i_div})
+    judged = limiter.judge(r.r7, r.network, tight)
+    assert not judged["meets"] and judged["divider_current"] == pytest.approx(i_div, rel=1e-9)
+    assert min(judged["margin_low"], judged["margin_high"]) >= tight["min_margin"]

@@ -157,13 +157,15 @@ def judge(r7: float, network, s: dict) -> dict:
     dict
         "i_trip_min" and "i_trip_max", the lowest and highest trip current over every corner, A; "margin_low"
         and "margin_high", the margins above ``i_no_trip`` and below ``i_must_trip``, fractions; "headroom_min",
-        the least headroom of either op-amp input, V (all floats); "meets", bool: both margins at least
-        ``min_margin`` and the headroom at least ``input_headroom``.
+        the least headroom of either op-amp input, V; "divider_current", what both dividers draw from the zener
+        node, A (all floats); "meets", bool: what a design must meet (:func:`.model.verify`'s "ok": both margins
+        at least ``min_margin``, the headroom at least ``input_headroom``, a positive trip current, the divider
+        current at most ``divider_current_max``).
     """
     v = net.verify(r7, network, s)
-    out = {k: float(v[k]) for k in ("i_trip_min", "i_trip_max", "margin_low", "margin_high", "headroom_min")}
-    out["meets"] = bool(min(out["margin_low"], out["margin_high"]) >= s["min_margin"] - 1e-12
-                        and out["headroom_min"] >= s["input_headroom"] - 1e-12)
+    out = {k: float(v[k]) for k in ("i_trip_min", "i_trip_max", "margin_low", "margin_high", "headroom_min",
+                                     "divider_current")}
+    out["meets"] = bool(v["ok"])  # the design's own acceptance: margins, headroom, a positive trip, divider current
     return out
 
 
