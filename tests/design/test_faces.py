@@ -44,3 +44,17 @@ def test_enumerating_a_full_series_is_refused_not_attempted():
 
     with pytest.raises(InputError, match="too many to enumerate"):
         limiter.enumerate({})
+
+
+def test_a_hand_made_table_is_checked_again():
+    """Only a design's ``checked`` marks a Table as checked: one made by hand (here with a tolerance of 500 %) is
+    validated like any spec, and copies and pickles keep the mark of a checked one."""
+    import copy
+    import pickle
+
+    from handbook.core import InputError
+
+    good = commutation.checked(None)
+    assert commutation.checked(copy.deepcopy(good)) == good and pickle.loads(pickle.dumps(good))._checked
+    with pytest.raises(InputError, match="commutation.tolerance = 5"):
+        commutation.design(Table("commutation", {**good, "tolerance": 5.0}))

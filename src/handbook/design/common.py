@@ -41,11 +41,12 @@ class Table(Mapping):
     check it again; ``{**s, key: value}`` is a plain dict, checked afresh where it is used as a spec.
     """
 
-    __slots__ = ("name", "_values")
+    __slots__ = ("name", "_values", "_checked")
 
     def __init__(self, name: str, values: Mapping):
         object.__setattr__(self, "name", name)
         object.__setattr__(self, "_values", dict(values))
+        object.__setattr__(self, "_checked", False)  # only checked_table marks one: a hand-made Table is checked again
 
     def __getitem__(self, key: str):
         return self._values[key]
@@ -65,7 +66,7 @@ class Table(Mapping):
             raise AttributeError(f"[{self.name}] has no key {key!r}") from None
 
     def __reduce__(self):
-        return Table, (self.name, self._values)
+        return _restored, (self.name, self._values, self._checked)
 
     def __setattr__(self, key, value):
         raise AttributeError(f"a checked [{self.name}] table is frozen: make a new spec with {{**s, {key!r}: ...}}")
@@ -74,8 +75,33 @@ class Table(Mapping):
         return f"Table({self.name!r}, {self._values!r})"
 
 
+def checked_table(name: str, values: Mapping) -> Table:
+    """The :class:`Table` a design's ``checked`` returns once every value and contradiction has been checked.
+
+    Parameters
+    ----------
+    name : str
+        The spec table ("commutation", "current_limiter", "class_d", "converter").
+    values : Mapping
+        Every key of the table, checked, SI units.
+
+    Returns
+    -------
+    Table
+        The frozen table, marked as checked (:func:`is_checked`).
+    """
+    table = Table(name, values)
+    object.__setattr__(table, "_checked", True)
+    return table
+
+
+def _restored(name: str, values: Mapping, checked: bool) -> Table:
+    """A Table from its pickled parts, checked only if it was (copy and pickle keep the mark)."""
+    return checked_table(name, values) if checked else Table(name, values)
+
+
 def is_checked(table: str, spec) -> bool:
-    """``spec`` is already a checked ``[table]``: a design takes it as it is.
+    """``spec`` is already a checked ``[table]`` (made by that design's ``checked``): a design takes it as it is.
 
     Parameters
     ----------
@@ -87,9 +113,9 @@ def is_checked(table: str, spec) -> bool:
     Returns
     -------
     bool
-        True when ``spec`` is a :class:`Table` of that name.
+        True when ``spec`` is a :class:`Table` of that name made by :func:`checked_table`.
     """
-    return isinstance(spec, Table) and spec.name == table
+    return isinstance(spec, Table) and spec.name == table and spec._checked
 
 
 def completed(table: str, spec: Mapping | None) -> dict:

@@ -13,6 +13,7 @@ import difflib
 import tomllib
 from collections.abc import Mapping
 from pathlib import Path
+from types import MappingProxyType
 
 from ..core import InputError
 from . import class_d, commutation, converter, limiter
@@ -32,8 +33,9 @@ class Spec(Mapping):
     where nothing was given), with every table checked once, at reading: ``tables`` {table: its checked
     :class:`~handbook.design.common.Table`}, which the designs take without checking again."""
 
-    def __init__(self, given: dict, tables: dict):
-        self._given, self.tables = given, tables
+    def __init__(self, given: dict, tables: dict):  # read-only views: a Spec is what was read, as it was checked
+        self._given = MappingProxyType({t: MappingProxyType(dict(body)) for t, body in given.items()})
+        self.tables = MappingProxyType(dict(tables))
 
     def __getitem__(self, table: str) -> dict:
         return self._given[table]

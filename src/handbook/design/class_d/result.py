@@ -35,7 +35,7 @@ import numpy as np
 
 from ...core import series
 from ...sources.lm4651 import circuit as lm4651
-from ..common import Result, Table, completed, is_checked, reported
+from ..common import Result, Table, checked_table, completed, is_checked, reported
 from ..solvers import IPOPT_OPTIONS, Infeasible, Solution
 from . import model
 from .explain import binding_text, infeasible, warnings
@@ -96,7 +96,7 @@ def checked(spec: Mapping | None) -> Table:
     """
     if is_checked(TABLE, spec):  # checked once, where it was read
         return spec
-    return Table(TABLE, completed(TABLE, spec))
+    return checked_table(TABLE, completed(TABLE, spec))
 
 
 def r_dly_for(s: dict) -> float:

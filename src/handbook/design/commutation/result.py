@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 from ...core import InputError, series
 from ...sources.an94002 import circuit as an94002
-from ..common import Result, Table, completed, is_checked, ordered, reported
+from ..common import Result, Table, checked_table, completed, is_checked, ordered, reported
 from ..solvers import Infeasible
 from . import checks, timers
 
@@ -95,7 +95,7 @@ def checked(spec: Mapping | None) -> Table:
         raise InputError(f"commutation.rpm_reverse = {s['rpm_reverse']:g} rpm bounds CAP-TI from above; give "
                          "commutation.flyback_time too (its lower bound), or leave rpm_reverse out")
     timers.motor_given(s)
-    return Table(TABLE, s)
+    return checked_table(TABLE, s)
 
 
 def box(c: float, s: dict, levels: bool = True) -> dict:

@@ -49,7 +49,7 @@ from ...core import InputError
 from ...core import series as eseries
 from ...sources.tca5600 import circuit as tca5600
 from ...sources.tca5600 import data as tca5600_data
-from ..common import Result, Table, completed, is_checked, ordered, reported
+from ..common import Result, Table, checked_table, completed, is_checked, ordered, reported
 from ..solvers import Infeasible
 from . import cores
 from .coil import (  # noqa: F401 (the coil's names are this module's too)
@@ -182,7 +182,7 @@ def checked(spec: Mapping | None) -> Table:
         raise InputError(f"converter.v_supply_min = {s['v_supply_min']:g} V must be above v_ce_sat + v12h = "
                          f"{drops:g} V: the coil needs a voltage to charge (eq 2, V_L- > 0)")
     ordered(TABLE, "v_supply_min", "v_supply_max", s, "V", strict=False)
-    return Table(TABLE, s)
+    return checked_table(TABLE, s)
 
 
 def operating_point(s: dict) -> dict:

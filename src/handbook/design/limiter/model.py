@@ -36,7 +36,7 @@ import casadi as ca
 import numpy as np
 
 from ...core import InputError, series
-from ..common import Table, completed, is_checked, ordered
+from ..common import Table, checked_table, completed, is_checked, ordered
 
 #: the divider resistors, in the order of every tuple here
 DIVIDER = ("r9", "r10", "r11", "r12", "r13")
@@ -359,7 +359,7 @@ def checked(spec: Mapping | None) -> Table:
     if s["i_no_trip"] * (1 + s["min_margin"]) >= s["i_must_trip"] * (1 - s["min_margin"]):
         raise InputError(f"{TABLE}.min_margin = {s['min_margin']:g} leaves no room between i_no_trip = "
                          f"{s['i_no_trip']:g} A and i_must_trip = {s['i_must_trip']:g} A: use a smaller margin")
-    return Table(TABLE, s)
+    return checked_table(TABLE, s)
 
 
 def choices(s: dict, name: str) -> np.ndarray:
