@@ -9,6 +9,22 @@ from ..core import InputError
 from .schema import TABLES
 
 
+def tables_of(key: str) -> list[str]:
+    """The spec tables that have ``key``, in the schema's order (``t_ambient`` is in two).
+
+    Parameters
+    ----------
+    key : str
+        A key of the schema, or any name.
+
+    Returns
+    -------
+    list of str
+        The tables whose schema holds ``key``; empty when none does.
+    """
+    return [t for t, params in TABLES.items() if any(p.name == key for p in params)]
+
+
 def key_error(table: str, key: str) -> InputError:
     """The error for ``key`` in ``[table]`` where the schema has no such key: the table it belongs in, if
     another has it, else the nearest key of this table, else the list of them.
@@ -25,7 +41,7 @@ def key_error(table: str, key: str) -> InputError:
     InputError
         The error to raise (not raised here), its message naming the key's table or the near match.
     """
-    homes = [t for t, params in TABLES.items() if t != table and any(p.name == key for p in params)]
+    homes = [t for t in tables_of(key) if t != table]
     if homes:
         return InputError(f"{key} is not a key of [{table}]: it belongs in {' or '.join(f'[{t}]' for t in homes)}")
     names = [p.name for p in TABLES[table]]

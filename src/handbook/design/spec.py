@@ -17,6 +17,7 @@ from types import MappingProxyType
 
 from ..core import InputError
 from . import class_d, commutation, converter, limiter
+from .common import tables_of
 from .schema import TABLES
 from .solvers import Infeasible
 
@@ -74,9 +75,9 @@ def parse(data: dict) -> Spec:
     given = {t: {} for t in TABLES}
     for table, body in data.items():
         if table not in TABLES:
-            home = next((t for t, params in TABLES.items() if any(p.name == table for p in params)), None)
-            if home is not None:
-                raise InputError(f"{table} = {body!r} is written outside any table: put it under [{home}]")
+            homes = tables_of(table)
+            if homes:
+                raise InputError(f"{table} = {body!r} is written outside any table: put it under [{homes[0]}]")
             near = difflib.get_close_matches(table, TABLES, n=1)
             raise InputError(f"unknown table [{table}]" + (f": did you mean [{near[0]}]?" if near else
                                                             f": use {', '.join('[' + t + ']' for t in TABLES)}"))

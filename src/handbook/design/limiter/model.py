@@ -208,8 +208,9 @@ def headroom_corners(r, s: dict) -> list:
 def margins(low, high, r7, s: dict) -> tuple:
     """The margins of trip voltages ``low`` and ``high`` (one corner's, or arrays of them) against the window:
     (low / (R7 (1 + t7)) / i_no_trip - 1, 1 - high / (R7 (1 - t7)) / i_must_trip), R7 at the end of its
-    tolerance that is worst for a positive voltage. The one place the margin is written: :func:`verify` takes
-    it at the worst corners, the search's bounds and relaxation corner by corner (numpy, floats or casadi).
+    tolerance that is worst for a positive voltage (:func:`current_margins` of those currents: the one place the
+    margin is written; :func:`verify` takes it at the worst corners, the search's bounds and relaxation corner by
+    corner; numpy, floats or casadi).
 
     Parameters
     ----------
@@ -229,8 +230,28 @@ def margins(low, high, r7, s: dict) -> tuple:
         (margin above ``i_no_trip``, margin below ``i_must_trip``), fractions of each limit (positive: inside the
         window), broadcast over the arguments.
     """
+    # current_margins(low / (R7 (1 + t7)), high / (R7 (1 - t7))), with R7 folded into one divisor: the form the
+    # search's relaxation and bounds have always used (a reordered division moves IPOPT's path)
     return (low / (r7 * (1 + s["r7_tolerance"]) * s["i_no_trip"]) - 1,
             1 - high / (r7 * (1 - s["r7_tolerance"]) * s["i_must_trip"]))
+
+
+def current_margins(i_low, i_high, s: dict) -> tuple:
+    """The margins of trip currents against the window: (i_low / i_no_trip - 1, 1 - i_high / i_must_trip).
+
+    Parameters
+    ----------
+    i_low, i_high : float or numpy.ndarray or casadi.SX
+        The lowest and highest trip current, A.
+    s : Mapping
+        The checked ``[current_limiter]`` table; ``i_no_trip`` and ``i_must_trip`` (A) are read.
+
+    Returns
+    -------
+    tuple
+        (margin above ``i_no_trip``, margin below ``i_must_trip``), fractions of each limit.
+    """
+    return i_low / s["i_no_trip"] - 1, 1 - i_high / s["i_must_trip"]
 
 
 def trip_currents(r7, r, s: dict):
@@ -282,8 +303,7 @@ def verify(r7, r, s: dict) -> dict:
     """
     import numpy as np
     i_lo, i_hi = trip_currents(r7, r, s)
-    # the margins of the worst trip currents (a negative trip voltage takes R7's other end)
-    m_lo, m_hi = margins(i_lo * r7 * (1 + s["r7_tolerance"]), i_hi * r7 * (1 - s["r7_tolerance"]), r7, s)
+    m_lo, m_hi = current_margins(i_lo, i_hi, s)  # the worst trip currents (a negative V_cs takes R7's other end)
     headroom = np.min(np.stack(headroom_corners(r, s)), axis=0)
     i_div = divider_current(r, s)
     ok = ((np.minimum(m_lo, m_hi) >= s["min_margin"] - 1e-12) & (headroom >= s["input_headroom"] - 1e-12) & (i_lo > 0)

@@ -156,16 +156,15 @@ def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold:
                   leaf_size: int = LEAF_SIZE, max_nodes_unsolved: int = MAX_NODES_UNSOLVED):
     """Branch and bound over R9..R13 with R7 fixed: the network with the largest worst margin."""
     def relaxed(lb, ub, state):
-        res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0,
-                          warm=state)
-        if res is None and state is not None:  # a warm start that fails is repeated cold before it prunes
-            res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(np.sqrt(lb * ub)), 0.0], 0.0)
-        if res is None:  # IPOPT's "infeasible" is a local verdict: tried again from the box's two extreme corners
-            for x0 in (lb, ub):
-                res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(x0), 0.0], 0.0)
-                if res is not None:
-                    break
-        if res is None:
+        # IPOPT's "infeasible" is a local verdict: a warm start that fails is repeated cold, then from the box's
+        # two extreme corners, before the box is dropped
+        middle = np.sqrt(lb * ub)
+        starts = [(middle, state)] + [(middle, None)] * (state is not None) + [(lb, None), (ub, None)]
+        for x0, warm in starts:
+            res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(x0), 0.0], 0.0, warm=warm)
+            if res is not None:
+                break
+        else:
             return None
         x, status, new_state = res
         if status not in ("Solve_Succeeded", "Solved_To_Acceptable_Level"):
