@@ -87,18 +87,23 @@ def limiter_corners(r7, network, s):
     biases = [(sg * ib, sg * ib) for sg in (-1, 1)] + [(sg * ib, sg * (ib - ios)) for sg in (-1, 1)] + [
         (sg * (ib - ios), sg * ib) for sg in (-1, 1)]
     net = [np.asarray(x, dtype=float) for x in network]
-    i_lo = np.full(np.broadcast(*net).shape, np.inf)
-    i_hi, head, i_div = -i_lo, i_lo.copy(), -i_lo
+    v_lo = np.full(np.broadcast(*net).shape, np.inf)
+    v_hi, head, i_div = -v_lo, v_lo.copy(), -v_lo
     for sg in itertools.product((-1.0, 1.0), repeat=5):
         r9, r10, r11, r12, r13 = (x * (1 + t * g) for x, g in zip(net, sg))
-        a = r13 / (r12 + r13)
+        a, k = r13 / (r12 + r13), r11 / (r9 + r10 + r11)
         r_plus, r_minus = r12 * r13 / (r12 + r13), (r9 + r10) * r11 / (r9 + r10 + r11)
-        for vz, vos, (i_p, i_m) in itertools.product((vz0 - dz, vz0 + dz), (-s["offset"], s["offset"]), biases):
-            v_cs = vz - (vz * r11 / (r9 + r10 + r11) + i_m * r_minus - i_p * r_plus + vos) / a
-            for r7_ in (r7 * (1 - s["r7_tolerance"]), r7 * (1 + s["r7_tolerance"])):
-                i_lo, i_hi = np.minimum(i_lo, v_cs / r7_), np.maximum(i_hi, v_cs / r7_)
-            head = np.minimum(head, np.minimum(vz - vz * a - i_p * r_plus, vz - vz * r11 / (r9 + r10 + r11) - i_m * r_minus))
+        for vz in (vz0 - dz, vz0 + dz):
             i_div = np.maximum(i_div, vz / (r9 + r10 + r11) + vz / (r12 + r13))
+            for i_p, i_m in biases:
+                head = np.minimum(head, np.minimum(vz - vz * a - i_p * r_plus, vz - vz * k - i_m * r_minus))
+                for vos in (-s["offset"], s["offset"]):
+                    v_cs = vz - (vz * k + i_m * r_minus - i_p * r_plus + vos) / a
+                    v_lo, v_hi = np.minimum(v_lo, v_cs), np.maximum(v_hi, v_cs)
+    # I = V_cs / R7 rises with V_cs for either end of R7 (> 0): its extremes are V_cs's over both ends
+    ends = (r7 * (1 - s["r7_tolerance"]), r7 * (1 + s["r7_tolerance"]))
+    i_lo = np.minimum(v_lo / ends[0], v_lo / ends[1])
+    i_hi = np.maximum(v_hi / ends[0], v_hi / ends[1])
     return i_lo, i_hi, head, i_div
 
 
