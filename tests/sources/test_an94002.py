@@ -293,7 +293,7 @@ def test_params_refuse_unknown_names_with_the_near_match():
 
 
 @pytest.mark.parametrize("key,value", [("rpm_min", -5.0), ("cap_tolerance", 1.5), ("pole_pairs", 2.5),
-                                       ("i_charge_max", float("nan")), ("cap_series", "E7"), ("v_zener", "8.2")])
+                                       ("i_charge_max", float("nan")), ("cap_series", "E7"), ("zener_voltage", "8.2")])
 def test_params_refuse_values_out_of_range_naming_the_key(key, value):
     with pytest.raises(InputError, match=key):
         note.params(**{key: value})

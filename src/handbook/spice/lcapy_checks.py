@@ -118,13 +118,13 @@ def compare() -> dict:
 
     held = trip_from_netlist()
     q = limiters.opamp_defaults()
-    values = {eqs.V_D1: q["v_d1"], eqs.R9: q["r9"], eqs.R10: q["r10"], eqs.R11: q["r11"], eqs.R12: q["r12"],
+    values = {eqs.V_D1: q["zener_voltage"], eqs.R9: q["r9"], eqs.R10: q["r10"], eqs.R11: q["r11"], eqs.R12: q["r12"],
               eqs.R13: q["r13"]}
     return {"lcapy": held, "derived": eqs.v_cs_at_trip(), "printed": eqs.eq13().printed,
             "same_as_derived": _same(held, eqs.v_cs_at_trip()), "same_as_printed": _same(held, eqs.eq13().printed),
             "free_of_loop_gain": not any(s.name in ("K", "A") for s in held.free_symbols),
             "at_parts": (float(held.subs(values)),
-                         float(note.v_cs_trip(q["v_d1"], q["r9"], q["r10"], q["r11"], q["r12"], q["r13"])))}
+                         float(note.v_cs_trip(q["zener_voltage"], q["r9"], q["r10"], q["r11"], q["r12"], q["r13"])))}
 
 
 # ----------------------------------------------------------------------------------------------

@@ -19,7 +19,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from ...core import InputError, series
+from ...core import InputError, series, tolerance
 from ...sources.an94002 import circuit as an94002
 from ..common import Result, Table, checked_table, completed, is_checked, ordered, reported
 from ..solvers import Infeasible
@@ -116,7 +116,7 @@ def box(c: float, s: dict, levels: bool = True) -> dict:
         {"cap": (low, high) in F, at +- ``tolerance``; "i": (``i_charge_min``, ``i_charge_max``) in A}, and with
         ``levels`` "v_low" and "v_high": (smallest, largest) in V.
     """
-    out = {"cap": timers.spread(c, s["tolerance"]), "i": (s["i_charge_min"], s["i_charge_max"])}
+    out = {"cap": tolerance.symmetric(c, s["tolerance"]), "i": (s["i_charge_min"], s["i_charge_max"])}
     if levels:
         out.update(v_low=(s["v_low_min"], s["v_low_max"]), v_high=(s["v_high_min"], s["v_high_max"]))
     return out

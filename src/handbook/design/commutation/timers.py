@@ -3,7 +3,7 @@
 Both choices are one-dimensional and every quantity is monotonic in each input (charge balance,
 t = C dV / I, and eq 2's sqrt(K_t I p / J)), so the worst case sits at a corner of the tolerance box and
 the continuous bound has an exact closed form; the series value is snapped from it and re-checked at
-every corner (:func:`corners`, 2^k points). No numerical optimiser is needed and none is used.
+every corner (:func:`worst`, 2^k points). No numerical optimiser is needed and none is used.
 
 * CAP-ST: the smallest capacitor whose shortest start period (smallest C, largest current) still lets
   the slowest rotor rocking (smallest K_t and start current, largest J; eq 2) decay to ``residual``;
@@ -14,11 +14,12 @@ every corner (:func:`corners`, 2^k points). No numerical optimiser is needed and
 """
 from __future__ import annotations
 
-import itertools
 import math
 from dataclasses import dataclass
 
-from ...core import InputError, series
+import numpy as np
+
+from ...core import InputError, series, tolerance
 from ...sources.an94002 import circuit as an94002
 from ..solvers import Infeasible
 
@@ -30,31 +31,8 @@ CAP_TI_MIN = 2e-9
 START_KEYS = ("inertia", "torque_constant", "start_current")
 
 
-def corners(f, ranges: dict) -> list[tuple[float, dict]]:
-    """f evaluated at every corner of the box ``ranges`` = {name: (low, high)}: [(value, corner)].
-
-    Parameters
-    ----------
-    f : callable
-        A function of keyword arguments, one per name of ``ranges``, returning a float.
-    ranges : dict
-        {argument name: (low, high)}, each end in the argument's own unit.
-
-    Returns
-    -------
-    list of tuple
-        2^k pairs (value, corner): ``f`` at the corner (in its own unit) and the corner as {name: value}.
-    """
-    names = list(ranges)
-    out = []
-    for ends in itertools.product((0, 1), repeat=len(names)):
-        point = {n: ranges[n][e] for n, e in zip(names, ends)}
-        out.append((f(**point), point))
-    return out
-
-
 def worst(f, ranges: dict, largest: bool) -> tuple[float, dict]:
-    """The largest (or smallest) value of ``f`` over all corners, with its corner.
+    """The largest (or smallest) value of ``f`` over every corner of the box ``ranges`` (core.tolerance.corners).
 
     Parameters
     ----------
@@ -71,26 +49,9 @@ def worst(f, ranges: dict, largest: bool) -> tuple[float, dict]:
         (value, corner): the extreme value of ``f`` (its own unit) and the corner, {name: value}, where it
         lies (the first such corner on a tie).
     """
-    pick = max if largest else min
-    return pick(corners(f, ranges), key=lambda vc: vc[0])
-
-
-def spread(x: float, tol: float) -> tuple[float, float]:
-    """A nominal value's range at a symmetric tolerance.
-
-    Parameters
-    ----------
-    x : float
-        The nominal value, in any unit.
-    tol : float
-        The tolerance, a fraction.
-
-    Returns
-    -------
-    tuple of float
-        (x (1 - tol), x (1 + tol)), in the unit of ``x``.
-    """
-    return x * (1 - tol), x * (1 + tol)
+    middle = {n: (lo + hi) / 2 for n, (lo, hi) in ranges.items()}
+    wc = tolerance.corners(np.vectorize(f, otypes=[float]), middle, ranges)
+    return (wc.high, wc.high_corner) if largest else (wc.low, wc.low_corner)
 
 
 def motor_given(s: dict) -> bool:
@@ -151,8 +112,8 @@ def rocking_box(s: dict) -> dict:
         high) in kg m^2}.
     """
     t = s["motor_tolerance"]
-    return {"torque_constant": spread(s["torque_constant"], t), "current": spread(s["start_current"], t),
-            "inertia": spread(s["inertia"], t)}
+    return {"torque_constant": tolerance.symmetric(s["torque_constant"], t),
+            "current": tolerance.symmetric(s["start_current"], t), "inertia": tolerance.symmetric(s["inertia"], t)}
 
 
 def f_osc(s: dict):
@@ -188,7 +149,7 @@ def start_box(c: float, s: dict) -> dict:
     dict
         {"cap": (low, high) in F, at +- ``tolerance``; "i_cap": (``i_st_min``, ``i_st_max``) in A}.
     """
-    return {"cap": spread(c, s["tolerance"]), "i_cap": (s["i_st_min"], s["i_st_max"])}
+    return {"cap": tolerance.symmetric(c, s["tolerance"]), "i_cap": (s["i_st_min"], s["i_st_max"])}
 
 
 def start_period(s: dict):
@@ -328,7 +289,7 @@ def check_watchdog(c: float, s: dict) -> dict:
         ``rpm_reverse``), ``long_enough`` (bool: the shortest outlasts the flyback and ``c`` is at least
         :data:`CAP_TI_MIN`) and ``short_enough`` (bool: the longest is within ``t_reverse``, or there is none).
     """
-    box = {"cap": spread(c, s["tolerance"]), "i_wd": (s["i_wd_min"], s["i_wd_max"])}
+    box = {"cap": tolerance.symmetric(c, s["tolerance"]), "i_wd": (s["i_wd_min"], s["i_wd_max"])}
     lo = worst(watchdog_time(s), box, largest=False)[0]
     hi = worst(watchdog_time(s), box, largest=True)[0]
     t_rev = None if s["rpm_reverse"] is None else an94002.reverse_catch_time(s["rpm_reverse"], s["pole_pairs"])

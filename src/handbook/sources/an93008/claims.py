@@ -127,7 +127,7 @@ def build() -> list[Claim]:
               printed=Printed("2", "%"), compute=_drift_pct, reason="155 mV / 7.7 V = 2.01 %", chapter=Z),
         Claim(id="an93008-zener-tc", where=f"{NAME} 2.2 vs BZX79 datasheet",
               quantity="largest zener temperature coefficient ('max. 6.2 mV/°C')", printed=Printed("6.2", "mV/K"),
-              chapter=Z, compute=lambda p: FACTS["bzx79_tc"].value[1] * p["v_zener"], basis="BZX79 datasheet",
+              chapter=Z, compute=lambda p: FACTS["bzx79_tc"].value[1] * p["zener_voltage"], basis="BZX79 datasheet",
               reason="BZX79 datasheet: up to +0.08 %/K, 6.56 mV/K at 8.2 V; over 25 C +- 25 C the drift becomes "
                      "+-164 mV, +-2.13 % of the note's 7.7 V (as AN94002 2.4, an94002-zener-tc)",
               consequence="the drift term grows from +-2.0 % to +-2.1 %: negligible by itself; with the datasheet's "

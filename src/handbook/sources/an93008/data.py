@@ -23,7 +23,7 @@ PARAMETERS = (
           high=0.1),
     Param(name="resistor_tolerance", default=0.05, unit="1", meaning="tolerance of R8 to R11 (fraction)", low=0.0,
           high=0.5),
-    Param(name="v_zener", default=8.2, unit="V", meaning="zener voltage of the figure 4 limiter", low=0.5, high=100.0),
+    Param(name="zener_voltage", default=8.2, unit="V", meaning="zener voltage of the figure 4 limiter", low=0.5, high=100.0),
     Param(name="zener_tolerance", default=0.05, unit="1", meaning="zener tolerance (fraction)", low=0.0, high=0.5),
     Param(name="zener_tolerance_a", default=0.01, unit="1", meaning="zener tolerance of the BZX79-A (fraction)",
           low=0.0, high=0.5),

@@ -585,12 +585,12 @@ def factor_b(r9, r10, r11):
     return r11 / (r9 + r10 + r11)
 
 
-def level_shift(v_d1, r12, r13, v_cs=0.0):
+def level_shift(zener_voltage, r12, r13, v_cs=0.0):
     """V_s - V_+ from eq 11: how far below the supply the op-amp inputs sit.
 
     Parameters
     ----------
-    v_d1 : float
+    zener_voltage : float
         Zener voltage V_D1, V.
     r12, r13 : float
         The level-shift divider's top and bottom resistors, ohm.
@@ -602,10 +602,10 @@ def level_shift(v_d1, r12, r13, v_cs=0.0):
     float
         V_s - V_+, V.
     """
-    return v_d1 - factor_a(r12, r13) * (v_d1 - v_cs)
+    return zener_voltage - factor_a(r12, r13) * (zener_voltage - v_cs)
 
 
-def v_cs_trip(v_d1, r9, r10, r11, r12, r13, offset=0.0):
+def v_cs_trip(zener_voltage, r9, r10, r11, r12, r13, offset=0.0):
     """The sense voltage at which the op-amp trips: eq 13 with the input offset referred back.
 
     V_+ - V_- = V_os at the trip point; with eq 11 and 12 that gives
@@ -613,7 +613,7 @@ def v_cs_trip(v_d1, r9, r10, r11, r12, r13, offset=0.0):
 
     Parameters
     ----------
-    v_d1 : float
+    zener_voltage : float
         Zener voltage V_D1, V.
     r9, r10, r11 : float
         The reference divider's resistors, ohm.
@@ -628,15 +628,15 @@ def v_cs_trip(v_d1, r9, r10, r11, r12, r13, offset=0.0):
         The trip voltage across the sense resistor R7, V.
     """
     a = factor_a(r12, r13)
-    return v_d1 * (1 - factor_b(r9, r10, r11) / a) - offset / a
+    return zener_voltage * (1 - factor_b(r9, r10, r11) / a) - offset / a
 
 
-def v_cs_matched(v_d1, r9, r10, r11):
+def v_cs_matched(zener_voltage, r9, r10, r11):
     """Eq 14: V_cs = V_D1 R9 / (R9 + R10 + R11), valid only for R10 = R12 and R11 = R13 exactly.
 
     Parameters
     ----------
-    v_d1 : float
+    zener_voltage : float
         Zener voltage V_D1, V.
     r9, r10, r11 : float
         The reference divider's resistors, ohm.
@@ -646,17 +646,17 @@ def v_cs_matched(v_d1, r9, r10, r11):
     float
         The trip voltage across the sense resistor R7, V.
     """
-    return v_d1 * r9 / (r9 + r10 + r11)
+    return zener_voltage * r9 / (r9 + r10 + r11)
 
 
-def r9_for(v_cs, v_d1, r10, r11):
+def r9_for(v_cs, zener_voltage, r10, r11):
     """Eq 14 solved for R9.
 
     Parameters
     ----------
     v_cs : float
         The trip voltage wanted across R7, V.
-    v_d1 : float
+    zener_voltage : float
         Zener voltage V_D1, V.
     r10, r11 : float
         The reference divider's other resistors, ohm.
@@ -667,9 +667,9 @@ def r9_for(v_cs, v_d1, r10, r11):
         Reference resistor R9, ohm.
     """
     validate.positive("v_cs", v_cs, "V")
-    if v_cs >= v_d1:
-        raise validate.InputError(f"v_cs = {v_cs:g} V must be below the zener voltage {v_d1:g} V")
-    return v_cs * (r10 + r11) / (v_d1 - v_cs)
+    if v_cs >= zener_voltage:
+        raise validate.InputError(f"v_cs = {v_cs:g} V must be below the zener voltage {zener_voltage:g} V")
+    return v_cs * (r10 + r11) / (zener_voltage - v_cs)
 
 
 def trip_worst_case(p: dict, r9: float | None = None, include=("resistors", "zener", "offset")):
@@ -678,7 +678,7 @@ def trip_worst_case(p: dict, r9: float | None = None, include=("resistors", "zen
     Parameters
     ----------
     p : Mapping
-        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_cs``, ``v_zener``, ``offset`` (V),
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_cs``, ``zener_voltage``, ``offset`` (V),
         ``r10`` to ``r13`` (ohm) and ``resistor_tolerance``, ``zener_tolerance`` (fractions).
     r9 : float or None
         Reference resistor R9, ohm; None: designed from ``p`` by eq 14 (:func:`r9_for`).
@@ -690,14 +690,15 @@ def trip_worst_case(p: dict, r9: float | None = None, include=("resistors", "zen
     WorstCase
         The trip voltage across R7 at nominal and at its extremes, V, with the corners giving them.
     """
-    r9 = r9_for(p["v_cs"], p["v_zener"], p["r10"], p["r11"]) if r9 is None else r9
+    r9 = r9_for(p["v_cs"], p["zener_voltage"], p["r10"], p["r11"]) if r9 is None else r9
     tr = validate.fraction("resistor_tolerance", p["resistor_tolerance"])
-    nominal = dict(v_d1=p["v_zener"], r9=r9, r10=p["r10"], r11=p["r11"], r12=p["r12"], r13=p["r13"], offset=0.0)
+    nominal = dict(zener_voltage=p["zener_voltage"], r9=r9, r10=p["r10"], r11=p["r11"], r12=p["r12"], r13=p["r13"], offset=0.0)
     spread = {}
     if "resistors" in include:
         spread.update({k: tolerance.symmetric(nominal[k], tr) for k in ("r9", "r10", "r11", "r12", "r13")})
     if "zener" in include:
-        spread["v_d1"] = tolerance.symmetric(p["v_zener"], validate.fraction("zener_tolerance", p["zener_tolerance"]))
+        spread["zener_voltage"] = tolerance.symmetric(p["zener_voltage"],
+                                                      validate.fraction("zener_tolerance", p["zener_tolerance"]))
     if "offset" in include:
         spread["offset"] = (-p["offset"], p["offset"])
     return tolerance.corners(v_cs_trip, nominal, spread)

@@ -151,7 +151,7 @@ def r13_max(p):
     ----------
     p : Mapping
         The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``level_shift_min`` (V), ``r12`` (ohm),
-        ``v_zener`` (V) and ``zener_tolerance``.
+        ``zener_voltage`` (V) and ``zener_tolerance``.
 
     Returns
     -------

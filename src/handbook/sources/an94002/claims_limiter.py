@@ -30,14 +30,14 @@ def vd1_min(p):
     Parameters
     ----------
     p : Mapping
-        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_zener`` (V) and ``zener_tolerance``.
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``zener_voltage`` (V) and ``zener_tolerance``.
 
     Returns
     -------
     float
         V_D1 at the low end of its tolerance, V.
     """
-    return p["v_zener"] * (1 - p["zener_tolerance"])
+    return p["zener_voltage"] * (1 - p["zener_tolerance"])
 
 
 def seen(p):
@@ -98,15 +98,15 @@ def zener_spread(p):
     Parameters
     ----------
     p : Mapping
-        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``v_zener``, V.
+        The AN94002 parameters (names as in :mod:`.data`, SI units); reads ``zener_voltage``, V.
 
     Returns
     -------
     float
-        The spread, a fraction of ``v_zener``.
+        The spread, a fraction of ``zener_voltage``.
     """
     low, high = FACTS["bzx79_vz"].value
-    return max(p["v_zener"] - low, high - p["v_zener"]) / p["v_zener"]
+    return max(p["zener_voltage"] - low, high - p["zener_voltage"]) / p["zener_voltage"]
 
 
 def build() -> list[Claim]:
@@ -184,7 +184,7 @@ def _budget(ch: str) -> list[Claim]:
               reason="155 mV / 7.79 V = 1.99 %"),
         Claim(id="an94002-zener-tc", where=f"{NAME} 2.4 vs BZX79 datasheet",
               quantity="largest zener temperature coefficient", printed=Printed("6.2", "mV/K"), chapter=ch,
-              compute=lambda p: FACTS["bzx79_tc"].value[1] * p["v_zener"],
+              compute=lambda p: FACTS["bzx79_tc"].value[1] * p["zener_voltage"],
               reason="BZX79 datasheet: up to +0.08 %/K, 6.56 mV/K at 8.2 V; the drift becomes +-164 mV, +-2.1 %",
               basis="BZX79 datasheet", consequence="the drift term grows from +-2.0 % to +-2.1 %: negligible"),
         Claim(id="an94002-resistor-tol", where=WHERE, quantity="resistor-related tolerance of the limit (1 % R9..R13)",

@@ -79,7 +79,7 @@ PARAMETERS = (
     Param(name="t_high", default=70.0, unit="degC", meaning="temperature range of the drift plots, high end",
           low=-273.0, high=500.0, cite=ASSUMED),
     # 2.4 op-amp limiter
-    Param(name="v_zener", default=8.2, unit="V", meaning="nominal zener voltage V_D1", low=0.1, high=100.0),
+    Param(name="zener_voltage", default=8.2, unit="V", meaning="nominal zener voltage V_D1", low=0.1, high=100.0),
     Param(name="zener_tolerance", default=0.05, unit="1", meaning="zener tolerance (BZX79-C: 5 %)",
           low=0.0, high=0.5, cite=BZX79),
     Param(name="zener_tc", default=6.2e-3, unit="V/K", meaning="zener temperature coefficient (the note's "

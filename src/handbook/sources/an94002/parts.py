@@ -105,7 +105,7 @@ def _calculation(ref: str, claim_id: str | None, p: dict, checks: dict) -> str:
         return (f"{eng(r7_for_limit(p['i_limit'], p['v_be']), 'Ω')} (O1, 0.8 V) or "
                 f"{eng(p['v_cs'] / p['i_limit'], 'Ω')} (O2, {eng(p['v_cs'], 'V')})")
     if ref == "R9":
-        return eng(series.nearest("E96", r9_for(p["v_cs"], p["v_zener"], p["r10"], p["r11"])), "Ω") + " (E96, eq 14)"
+        return eng(series.nearest("E96", r9_for(p["v_cs"], p["zener_voltage"], p["r10"], p["r11"])), "Ω") + " (E96, eq 14)"
     if claim_id:
         r = checks[claim_id]
         return f"{eng(r['computed'], _symbol(r['unit']))}: {r['status']}"
@@ -131,7 +131,7 @@ def parts_rows(p: dict, checks: list[dict]) -> list[list[str]]:
     ----------
     p : Mapping
         The AN94002 parameters (names as in :mod:`.data`, SI units); R7 and R9 are designed from ``i_limit``
-        (A), ``v_be``, ``v_cs``, ``v_zener`` (V) and ``r10``, ``r11`` (ohm).
+        (A), ``v_be``, ``v_cs``, ``zener_voltage`` (V) and ``r10``, ``r11`` (ohm).
     checks : list of dict
         The evaluated claims at ``p``, as :meth:`~handbook.core.Source.evaluate` returns them.
 

@@ -37,7 +37,7 @@ def design_candidates(result) -> list[dict]:
     for signs in itertools.product((-1, 1), repeat=6):
         r = [x * (1 + tol * g) for x, g, tol in zip((result.r7, *result.network), signs, (s["r7_tolerance"],) + (t,) * 5)]
         for vz, vos, (ibp, ibn) in itertools.product(net.zener_range(s), (-off, off), biases):
-            out.append({**base, **dict(zip(("r7", "r9", "r10", "r11", "r12", "r13"), r)), "v_d1": vz, "vos": vos,
+            out.append({**base, **dict(zip(("r7", "r9", "r10", "r11", "r12", "r13"), r)), "zener_voltage": vz, "vos": vos,
                         "ibp": ibp, "ibn": ibn})
     return out
 
@@ -49,7 +49,7 @@ def design_corners(result) -> tuple[dict, dict, dict]:
     lo = hi = head = None
     for p in design_candidates(result):
         p["i_eq"] = trip_voltage(p) / p["r7"]
-        s910, r11, r12, r13, vz = p["r9"] + p["r10"], p["r11"], p["r12"], p["r13"], p["v_d1"]
+        s910, r11, r12, r13, vz = p["r9"] + p["r10"], p["r11"], p["r12"], p["r13"], p["zener_voltage"]
         p["head_eq"] = min(vz * r12 / (r12 + r13) - p["ibp"] * r12 * r13 / (r12 + r13),
                            vz * s910 / (s910 + r11) - p["ibn"] * s910 * r11 / (s910 + r11))
         lo = p if lo is None or p["i_eq"] < lo["i_eq"] else lo
@@ -74,7 +74,7 @@ def design_deck(corners: list[dict], i_top: float, folder) -> tuple[str, list[st
     for k, p in enumerate(corners):
         sfx = f"_{k}"
         m, lines = opamp_block({**p, "i_max": 1.0}, sfx)
-        zener = zeners.setdefault(round(p["v_d1"], 9), f"DZC{len(zeners)}")  # one .model per zener voltage
+        zener = zeners.setdefault(round(p["zener_voltage"], 9), f"DZC{len(zeners)}")  # one .model per zener voltage
         if zener == f"DZC{len(zeners) - 1}" and len(zeners) > len([ln for ln in models_ if ".model DZC" in ln]):
             models_ += [ln.replace(f"DZ{sfx} ", f"{zener} ") for ln in m]
         body += [ln.replace(f" DZ{sfx} ", f" {zener} ") for ln in lines if not ln.startswith(f"IM{sfx} ")]

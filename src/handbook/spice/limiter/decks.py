@@ -132,8 +132,8 @@ def opamp_defaults() -> dict:
     """The note's values: R9 from eq 14 for 100 mV, its E96 value (as the parts chapter picks it); R7 = V_cs
     over the chosen limit; D1 fed by R14 (parts list)."""
     p = an94002.params()
-    r9 = series.nearest("E96", an94002.r9_for(p["v_cs"], p["v_zener"], p["r10"], p["r11"]))
-    return {"v_supply": p["v_supply"], "v_d1": p["v_zener"], "r7": p["v_cs"] / p["i_limit"], "r9": r9,
+    r9 = series.nearest("E96", an94002.r9_for(p["v_cs"], p["zener_voltage"], p["r10"], p["r11"]))
+    return {"v_supply": p["v_supply"], "zener_voltage": p["zener_voltage"], "r7": p["v_cs"] / p["i_limit"], "r9": r9,
             "r10": p["r10"], "r11": p["r11"], "r12": p["r12"], "r13": p["r13"], "r14": BOARD["R14"],
             "vos": 0.0, "ibp": models.LM358["bias"], "ibn": models.LM358["bias"], "i_max": 2 * p["i_limit"]}
 
@@ -143,7 +143,7 @@ def opamp_parts(p: dict) -> tuple[Part, ...]:
             Part("R9", p["r9"], "ohm", "sets the trip point"), Part("R10", p["r10"], "ohm", "reference divider"),
             Part("R11", p["r11"], "ohm", "reference divider"), Part("R12", p["r12"], "ohm", "level shift"),
             Part("R13", p["r13"], "ohm", "level shift"), Part("R14", p["r14"], "ohm", "D1's feed"),
-            Part("D1", "BZX79-C8V2", "", f"V_Z = {p['v_d1']:.4g} V at 5 mA"),
+            Part("D1", "BZX79-C8V2", "", f"V_Z = {p['zener_voltage']:.4g} V at 5 mA"),
             Part("U1", "LM358", "", f"offset {p['vos'] * 1e3:g} mV, bias {p['ibp'] * 1e9:g} / {p['ibn'] * 1e9:g} nA"),
             Part("IM", p["i_max"], "A", "motor current, ramped from 0 to this value"))
 
@@ -160,7 +160,7 @@ def opamp_block(p: dict, sfx: str = "") -> tuple[list[str], list[str]]:
     lines = element_lines(opamp_parts(p), OPAMP_NODES, sfx, **u1)
     lines += [f"VAM{sfx} cs{sfx} csm{sfx} 0", _probe(f"cs{sfx}", f"v(vs{sfx})-v(cs{sfx})"),
               _probe(f"hp{sfx}", f"v(vs{sfx})-v(inp{sfx})"), _probe(f"hm{sfx}", f"v(vs{sfx})-v(inn{sfx})")]
-    return models.bzx79_c8v2(f"DZ{sfx}", p["v_d1"]), lines
+    return models.bzx79_c8v2(f"DZ{sfx}", p["zener_voltage"]), lines
 
 
 def _mid(p: dict) -> float:
@@ -198,10 +198,10 @@ def opamp(p: dict | None = None) -> Circuit:
     """AN94002 figure 3 with the note's values: the trip as the motor current ramps, and the level shift."""
     p = {**opamp_defaults(), **(p or {})}
     parts = opamp_parts(p)
-    eq_vcs = an94002.v_cs_trip(p["v_d1"], p["r9"], p["r10"], p["r11"], p["r12"], p["r13"], p["vos"])
+    eq_vcs = an94002.v_cs_trip(p["zener_voltage"], p["r9"], p["r10"], p["r11"], p["r12"], p["r13"], p["vos"])
     checks = (
         Check("limiter-opamp-shift", "V_s − V_+ at V_cs = 0 (eq 11: the level shift)", "V",
-              an94002.level_shift(p["v_d1"], p["r12"], p["r13"]), "head_p", 0.003,
+              an94002.level_shift(p["zener_voltage"], p["r12"], p["r13"]), "head_p", 0.003,
               "the bias current out of V+ through R12 || R13 (2 mV of the 2.13 V shift, 0.1 %) and the zener's "
               "15 ohm at the current it really carries (about 0.1 %), the same way here (0.22 % seen): ±0.3 %"),
         Check("limiter-opamp-vcs", "V_cs where the output switches (eq 13)", "V", eq_vcs, "vcs_trip", 0.01, LAG),
@@ -221,7 +221,7 @@ def corner_defaults() -> dict:
     s = design.checked({})
     p = opamp_defaults()
     t = s["resistor_tolerance"]
-    return {**p, "v_d1": net.zener_range(s)[0], "r12": p["r12"] * (1 - t), "r13": p["r13"] * (1 + t),
+    return {**p, "zener_voltage": net.zener_range(s)[0], "r12": p["r12"] * (1 - t), "r13": p["r13"] * (1 + t),
             "ibp": s["input_bias"], "ibn": s["input_bias"], "spec": s}
 
 
@@ -231,7 +231,7 @@ def trip_voltage(p: dict) -> float:
     network = (p["r9"], p["r10"], p["r11"], p["r12"], p["r13"])
     a = an94002.factor_a(p["r12"], p["r13"])
     r_m = (p["r9"] + p["r10"]) * p["r11"] / (p["r9"] + p["r10"] + p["r11"])
-    return an94002.v_cs_trip(p["v_d1"], *network, p["vos"]) + p["ibp"] * p["r12"] - p["ibn"] * r_m / a
+    return an94002.v_cs_trip(p["zener_voltage"], *network, p["vos"]) + p["ibp"] * p["r12"] - p["ibn"] * r_m / a
 
 
 def corner_equations(p: dict) -> dict:
@@ -242,7 +242,7 @@ def corner_equations(p: dict) -> dict:
 
     s = p["spec"]
     r_p = p["r12"] * p["r13"] / (p["r12"] + p["r13"])
-    head0 = an94002.level_shift(p["v_d1"], p["r12"], p["r13"]) - p["ibp"] * r_p
+    head0 = an94002.level_shift(p["zener_voltage"], p["r12"], p["r13"]) - p["ibp"] * r_p
     a = an94002.factor_a(p["r12"], p["r13"])
     v_back = (s["input_headroom"] - head0) / a
     trip = trip_voltage(p)
