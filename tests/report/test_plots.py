@@ -54,8 +54,7 @@ PLOTS = {
         d["current_limiter"], {"the note's method": (0.075, NOTE_NETWORK)}, n=10_000)[0],
     "limiter_design_space": lambda d: design_plots.limiter_design_space(d["current_limiter"],
                                                                         {"the note's method": (0.075, 267.0)}),
-    "limiter_sensitivity": lambda d: design_plots.limiter_sensitivity(limiter.analysis.sensitivity(
-        d["current_limiter"].r7, d["current_limiter"].network, d["current_limiter"].spec)),
+    "limiter_sensitivity": lambda d: design_plots.limiter_sensitivity(limiter.sensitivity(d["current_limiter"])),
     "class_d_margins": lambda d: design_plots.class_d_margins(
         d["class_d"], {"datasheet's parts": datasheet_application(d["class_d"].spec)["margins"]}),
     "class_d_design_space": lambda d: design_plots.class_d_design_space(d["class_d"]),

@@ -57,10 +57,10 @@ def limiter_design_space(result, marks: dict | None = None):
 
 
 def limiter_sensitivity(rows):
-    """Bar chart of :func:`handbook.design.limiter.analysis.sensitivity`: each source's share of the trip-current spread."""
+    """Bar chart of :func:`handbook.design.limiter.sensitivity`: each source's share of the trip-current spread."""
     fig, ax = plt.subplots(figsize=(7, 3))
-    names = [r[0] for r in rows][::-1]
-    ax.barh(names, [r[1] * 100 for r in rows][::-1], color="C0")
+    names = [r["source"] for r in rows][::-1]
+    ax.barh(names, [r["share"] * 100 for r in rows][::-1], color="C0")
     ax.set_xlabel("share of the worst-case spread ln(I_max / I_min) (%)")
     ax.grid(True, axis="x", alpha=0.3)
     fig.tight_layout()

@@ -12,8 +12,9 @@ from .result import enumerate_series as _enumerate_series
 TABLE = "class_d"
 
 
-def enumerate(spec: dict | None = None):
-    """Exhaustive: the best (R_OSC, L, C_BYP, R_DLY) over the whole series grid, or None.
+def enumerate(spec: dict | None = None) -> dict | None:
+    """Exhaustive: the best R_OSC, L, C_BYP and R_DLY over the whole series grid, keyed as
+    :class:`ClassDResult` reports them.
 
     Parameters
     ----------
@@ -22,8 +23,8 @@ def enumerate(spec: dict | None = None):
 
     Returns
     -------
-    tuple of float or None
-        (R_OSC in ohm, L in H, C_BYP in F, R_DLY in ohm) of the best series design, or None when no series
+    dict or None
+        {"r_osc": ohm, "l_out": H, "c_out": F, "r_dly": ohm} of the best series design, or None when no series
         design meets every check.
 
     Raises
@@ -33,7 +34,8 @@ def enumerate(spec: dict | None = None):
     Infeasible
         When no series R_DLY gives ``dead_time_min``.
     """
-    return _enumerate_series(spec)
+    best = _enumerate_series(spec)
+    return None if best is None else dict(zip(("r_osc", "l_out", "c_out", "r_dly"), best))
 
 
 def explain(spec: dict | None = None):

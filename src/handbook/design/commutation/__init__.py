@@ -6,10 +6,33 @@
 """
 from ..common import explained
 from .result import CommutationResult, bounds, checked, design, verify
-from .result import enumerate_series as enumerate
+from .result import enumerate_series as _enumerate_series
 from .result import sensitivity as _sensitivity
 
 TABLE = "commutation"
+
+
+def enumerate(spec: dict | None = None) -> dict | None:
+    """Exhaustive: the first series CAP-CD, from 1 pF up, that meets the spec at every corner, keyed as
+    :class:`CommutationResult` reports it (every design's ``enumerate`` has this shape).
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[commutation]`` table, {key: value} in SI units (speeds in rpm); None takes the defaults.
+
+    Returns
+    -------
+    dict or None
+        {"cap_cd": F}, or None when no series value meets the spec.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is invalid.
+    """
+    c = _enumerate_series(spec)
+    return None if c is None else {"cap_cd": c}
 
 
 def explain(spec: dict | None = None):

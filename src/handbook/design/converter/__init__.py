@@ -13,9 +13,9 @@ TABLE = "converter"
 TOLERANCES = ("r1_tolerance", "a_l_tolerance")
 
 
-def enumerate(spec: dict | None = None):
-    """Exhaustive: every candidate coil wound for ``spec`` and the smallest that meets it (or None):
-    (operating point, every candidate, chosen).
+def enumerate(spec: dict | None = None) -> dict | None:
+    """Exhaustive: every candidate core of the database wound for ``spec``, and the smallest that meets every
+    limit, keyed as :class:`ConverterResult` reports it (:func:`choose` gives every candidate).
 
     Parameters
     ----------
@@ -25,17 +25,18 @@ def enumerate(spec: dict | None = None):
 
     Returns
     -------
-    tuple
-        (the operating point, a dict as :func:`~handbook.design.converter.result.operating_point` gives it;
-        every candidate :class:`~handbook.design.converter.coil.Coil`, smallest effective volume first; the
-        first that meets every limit, or None).
+    dict or None
+        {"core_shape", "core_material", "turns", "wire"} of the smallest candidate (by effective volume) that
+        meets every limit, or None when none does.
 
     Raises
     ------
     InputError
         When ``spec`` is invalid.
     """
-    return choose(checked(spec))
+    _, _, coil = choose(checked(spec))
+    return None if coil is None else {"core_shape": coil.shape, "core_material": coil.material, "turns": coil.turns,
+                                      "wire": coil.wire}
 
 
 def explain(spec: dict | None = None):

@@ -12,7 +12,34 @@ from .analysis import sensitivity as _sensitivity
 from .model import TABLE, checked, zener_range
 from .result import IC_LIMIT_MIN, LimiterResult, design, judge, warnings
 from .search import GAP, LEAF_SIZE
-from .search import enumerate_series as enumerate
+from .search import enumerate_series as _enumerate_series
+
+
+def enumerate(spec: dict | None = None) -> dict | None:
+    """Exhaustive, for series small enough to list (up to ``search.ENUMERATE_MAX`` networks): the smallest R7
+    with a network, and the network of the largest worst margin, keyed as :class:`LimiterResult` reports them.
+
+    Parameters
+    ----------
+    spec : dict or None
+        The ``[current_limiter]`` table, {key: value}, SI units (None: the defaults).
+
+    Returns
+    -------
+    dict or None
+        {"r7", "r9", "r10", "r11", "r12", "r13": ohm; "worst_margin": that network's worst margin, a fraction},
+        or None when no network of the series meets the spec.
+
+    Raises
+    ------
+    InputError
+        When ``spec`` is invalid, or its series hold too many networks to enumerate.
+    """
+    best = _enumerate_series(spec)
+    if best is None:
+        return None
+    r7, network, margin = best
+    return {"r7": r7, **dict(zip(("r9", "r10", "r11", "r12", "r13"), network)), "worst_margin": margin}
 
 
 def explain(spec: dict | None = None):
