@@ -55,13 +55,16 @@ def test_every_default_is_inside_its_own_range(source):
         assert p.check(p.default) == p.default, p.name
 
 
-def test_cache_key_changes_with_the_code_that_defines_the_equations(monkeypatch):
-    src = SOURCES[2]
-    k = key(src)
-    import handbook.core.checks_cache as cc
+@pytest.mark.parametrize("edited", ["equations.py", "data.py", "circuit.py", "units.py", "equation.py"])
+def test_cache_key_changes_with_any_code_the_equations_read(monkeypatch, edited):
+    """Not only the equations module: the source's data and circuit (the printed values, the constants) and
+    handbook.core (checking, units) change what a summary holds, so an edit to any of them is a new key."""
+    from pathlib import Path
 
-    real = cc._module_bytes
-    monkeypatch.setattr(cc, "_module_bytes", lambda name: real(name) + (b"#" if name.endswith("equations") else b""))
+    src = next(s for s in SOURCES if s.name == "AN94002")
+    k = key(src)
+    real = Path.read_bytes
+    monkeypatch.setattr(Path, "read_bytes", lambda self: real(self) + (b"#" if self.name == edited else b""))
     assert key(src) != k
 
 

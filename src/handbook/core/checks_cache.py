@@ -15,14 +15,14 @@ import json
 import os
 from pathlib import Path
 
-_CHECK_CODE = ("handbook.core.equation", "handbook.core.checks_cache")
 
-
-def _module_bytes(name: str) -> bytes:
-    spec = importlib.util.find_spec(name)
+def _package_files(module: str) -> list[Path]:
+    """Every .py file of the package ``module`` lives in (the module's own file if it is not in one)."""
+    spec = importlib.util.find_spec(module)
     if spec is None or spec.origin is None:
-        raise ModuleNotFoundError(name)
-    return Path(spec.origin).read_bytes()
+        raise ModuleNotFoundError(module)
+    folder = Path(spec.origin).parent
+    return sorted(folder.rglob("*.py")) if (folder / "__init__.py").exists() else [Path(spec.origin)]
 
 
 def key(source) -> str:
@@ -36,14 +36,16 @@ def key(source) -> str:
     Returns
     -------
     str
-        The first 20 hex digits of a SHA-256 over the sympy version, the source's name, and the code of its
-        equations module and of the checking modules.
+        The first 20 hex digits of a SHA-256 over the sympy version, the source's name, and the code of every
+        module the summaries can read: the whole package of its equations module (its data, circuit and facts
+        as well as the equations) and the whole of ``handbook.core`` (the checking, units and validation).
     """
     from importlib.metadata import version
 
     h = hashlib.sha256(f"sympy {version('sympy')}\n{source.name}\n".encode())
-    for name in (source.equations_module, *_CHECK_CODE):
-        h.update(name.encode() + b"\0" + _module_bytes(name) + b"\0")
+    root = Path(__file__).resolve().parents[1]
+    for path in [*_package_files(source.equations_module), *sorted((root / "core").rglob("*.py"))]:
+        h.update(str(path.relative_to(root)).encode() + b"\0" + path.read_bytes() + b"\0")
     return h.hexdigest()[:20]
 
 

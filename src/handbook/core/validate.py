@@ -163,7 +163,8 @@ def positive(name: str, value, unit: str = "", high: float | None = None) -> flo
 
 
 def fraction(name: str, value) -> float:
-    """A tolerance as a fraction: 0 <= value < 1 (5 % is 0.05).
+    """A tolerance as a fraction: 0 <= value <= 0.999 (5 % is 0.05; a tolerance of 100 % or more would let a
+    part's value reach zero or below).
 
     Parameters
     ----------

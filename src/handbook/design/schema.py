@@ -155,7 +155,7 @@ def _tables() -> dict[str, tuple[Param, ...]]:
     """The literal table (data)."""
     return {
         "commutation": (
-            Param(name="pole_pairs", default=6, unit="", meaning="magnetic pole pairs n (whole number)", low=1,
+            Param(name="pole_pairs", default=6, unit="", meaning="magnetic pole pairs n, a whole number", low=1,
                   high=100),
             Param(name="rpm_min", default=1800.0, unit="rpm", meaning="lowest speed that must commutate reliably",
                   high=1e6, **_POS),

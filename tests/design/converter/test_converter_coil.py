@@ -133,3 +133,14 @@ def test_core_loss_against_pyopenmagnetics(pom, f_min):
     theirs = loss * (delta_b / b_pom) ** fit["beta"] * (f_min / f_pom) ** fit["alpha"]
     assert mine == pytest.approx(theirs, rel=0.15)
     assert r.core_loss >= mine * (1 - 1e-9)  # the reported loss is the largest over the supply range
+
+
+def test_too_few_turns_for_any_gap_fail_by_name_not_by_a_math_error(pom, result):
+    """Two turns on the chosen core: the ungapped core's reluctance already exceeds N^2 / L (PyOpenMagnetics'
+    inductance with those turns and the table's shortest gap is far below L1), so no gap gives L1; the
+    candidate fails on the gap, named, instead of raising a math domain error."""
+    s = converter.checked({})
+    op = converter.operating_point(s)
+    coil = converter.wind(result.core_shape, result.core_material, s, op, 2)
+    assert pom_inductance(pom, result.core_shape, result.core_material, 1e-6, 2) < op["l1_nominal"] / 2
+    assert "gap" in coil.limits and "even on the ungapped core" in coil.fails

@@ -74,3 +74,33 @@ def test_judge_holds_a_network_to_everything_a_design_must_meet():
     judged = limiter.judge(r.r7, r.network, tight)
     assert not judged["meets"] and judged["divider_current"] == pytest.approx(i_div, rel=1e-9)
     assert min(judged["margin_low"], judged["margin_high"]) >= tight["min_margin"]
+
+
+@pytest.mark.parametrize("spec", [{}, {"i_no_trip": 0.3, "i_must_trip": 0.7, "r7_tolerance": 0.1}])
+def test_r7_loss_is_the_worst_corner_of_v_squared_over_r(spec):
+    """A stalled motor holds V_cs at its trip level across R7: the loss V_cs^2 / R7 is largest with the highest
+    trip voltage (the oracle's corners with R7 exact) across the smallest R7, not the highest current times the
+    largest R7 (the two cannot meet: the highest current is the smallest R7's)."""
+    r = limiter.design(spec)
+    t = r.spec["r7_tolerance"]
+    _, v_hi, _, _ = limiter_corners(1.0, r.network, {**r.spec, "r7_tolerance": 0.0})  # R7 = 1 ohm exact: V_cs
+    worst = max(float(v_hi) ** 2 / (r.r7 * (1 + g * t)) for g in (-1, 1))
+    assert r.p_r7 == pytest.approx(worst, rel=1e-9)
+    assert r.p_r7 < float(v_hi) ** 2 / r.r7 * (1 + t) / (1 - t) ** 2 * 0.99  # what the old product gave
+
+
+def test_a_blamed_pin_is_one_whose_freedom_meets_the_spec():
+    """The message's claim is checked by designing with the pin freed: the R7 it names is the design's."""
+    with pytest.raises(Infeasible) as exc:
+        limiter.design({"r12": 1e3, "r13": 100e3})
+    freed = limiter.design({"r13": 100e3})
+    assert f"meets it (with R7 = {freed.r7:.3g} ohm)" in str(exc.value)
+
+
+def test_a_pin_whose_own_range_holds_no_series_value_is_not_freed():
+    """R12 pinned to 1 kohm breaks the spec; its range (8.7 kohm, between the E48 values 8.66 k and 9.09 k) holds
+    no value to free it to: the answer is still an Infeasible saying what can be met, not an input error."""
+    spec = {"r12": 1e3, "r13": 100e3, "r12_min": 8700.0, "r12_max": 8700.0, "r12_series": "E48"}
+    with pytest.raises(Infeasible) as exc:
+        limiter.design(spec)
+    assert "pinned" not in exc.value.achievable and exc.value.achievable

@@ -263,15 +263,18 @@ def gap_for(shape: dict, reluctance: float) -> float | None:
         One core shape's row of :func:`~handbook.design.converter.cores.load` (areas m^2, lengths m, volume m^3,
         gap table in m and A/Wb).
     reluctance : float
-        The gaps' reluctance wanted, A/Wb (positive).
+        The gaps' reluctance wanted, A/Wb (zero or less: the ungapped core alone already has more reluctance
+        than the turns allow, so they give too little inductance whatever the gap).
 
     Returns
     -------
     float or None
-        The centre gap's length, m (below the table's shortest gap, extrapolated); None above the table's
-        largest reluctance.
+        The centre gap's length, m (below the table's shortest gap, extrapolated; 0 where ``reluctance`` is not
+        positive: no gap can lower the reluctance); None above the table's largest reluctance.
     """
     xs, ys = shape["gap_lengths"], shape["gap_reluctance"]
+    if reluctance <= 0:
+        return 0.0
     if reluctance > ys[-1]:
         return None
     k = min(max(1, next((i for i, y in enumerate(ys) if y >= reluctance), len(ys) - 1)), len(ys) - 1)
@@ -395,12 +398,16 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
     r_core = core_reluctance(shape, material)
     t_cu = s["t_ambient"] + s["temperature_rise_max"]  # copper at the hottest the rise allows
     copper = (1 + ALPHA_CU * (t_cu - 20)) / (1 + ALPHA_CU * (T_WIRE_TABLE - 20))
-    gap = gap_for(shape, n * n / op["l1_nominal"] - r_core)
+    gap_reluctance = n * n / op["l1_nominal"] - r_core
+    gap = gap_for(shape, gap_reluctance)
     flux = op["l1_max"] * op["i_peak_max"] / n
     b_centre, b_narrow = flux / shape["a_centre"], flux / shape["a_min"]
     fails, limits = [], []
     if gap is None:
         fails.append(f"the gap for {n} turns is longer than {shape['gap_lengths'][-1] * 1e3:.3g} mm")
+        limits.append("gap")
+    elif gap_reluctance <= 0:
+        fails.append(f"{n} turns give less than L1 = {op['l1_nominal'] * 1e6:.3g} uH even on the ungapped core")
         limits.append("gap")
     elif gap < GAP_MIN * (1 - 1e-6):
         fails.append(f"the gap for {n} turns is {gap * 1e6:.3g} um, below {GAP_MIN * 1e6:g} um")

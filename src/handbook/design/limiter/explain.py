@@ -8,10 +8,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...core import InputError
 from ..solvers import Infeasible
 from . import model as net
 from .model import TABLE, best_headroom, choices
-from .search import Relaxation
+from .search import LEAF_SIZE, Relaxation, solve
 
 
 def best_margin(s: dict) -> float | None:
@@ -90,8 +91,10 @@ def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
 
 
 def explain(s: dict, r7_relaxed: float | None) -> Infeasible:
-    """The Infeasible that says why, and what would be met. A pinned resistor is blamed when freeing
-    it alone lifts the cause (the headroom's exact best, or the relaxation's best margin, reaches the spec).
+    """The Infeasible that says why, and what would be met. A pinned resistor is blamed when freeing it
+    alone lifts the cause (the headroom's exact best, or the relaxation's best margin, reaches the spec) and
+    the search then finds a series network that meets the whole spec; a pin whose own range holds no value of
+    its series is not freed.
 
     Parameters
     ----------
@@ -111,21 +114,29 @@ def explain(s: dict, r7_relaxed: float | None) -> Infeasible:
     Raises
     ------
     InputError
-        When a resistor's range holds no value of its series (a pinned resistor's range is read once it is
-        freed).
+        When a free resistor's range holds no value of its series.
     """
     message, achievable = _reason(s, r7_relaxed)
     for name in (n for n in ("r7",) + net.DIVIDER if s[n] is not None):
         free = {**s, name: None}
-        if "divider_current_min" in achievable:
-            lifted = least_divider_current(free) <= s["divider_current_max"]
-        elif "headroom_max" in achievable:
-            lifted = best_headroom(free) >= s["input_headroom"]
-        else:
-            margin = best_margin(free)
-            lifted = margin is not None and margin >= s["min_margin"]
-        if lifted:
+        try:
+            lifted = _lifts(free, s, achievable)
+        except InputError:  # its range holds no value of its series: freeing it is no way out
+            continue
+        found = solve(free, LEAF_SIZE)["r7"] if lifted else None
+        if found is not None:
             return Infeasible(TABLE, f"{name} = {s[name]:g} ohm (pinned) makes the spec infeasible: {message}. Left "
                              f"free, a network of the {s[name + '_series']} range {s[name + '_min']:g} .. "
-                             f"{s[name + '_max']:g} ohm can meet it", {**achievable, "pinned": name})
+                             f"{s[name + '_max']:g} ohm meets it (with R7 = {found:.3g} ohm)",
+                              {**achievable, "pinned": name})
     return Infeasible(TABLE, message, achievable)
+
+
+def _lifts(free: dict, s: dict, achievable: dict) -> bool:
+    """Freeing a pin lifts the cause ``achievable`` names (a necessary condition, checked before the search)."""
+    if "divider_current_min" in achievable:
+        return least_divider_current(free) <= s["divider_current_max"]
+    if "headroom_max" in achievable:
+        return best_headroom(free) >= s["input_headroom"]
+    margin = best_margin(free)
+    return margin is not None and margin >= s["min_margin"]

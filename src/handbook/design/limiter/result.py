@@ -96,7 +96,7 @@ def design(spec: dict | None = None, leaf_size: int = LEAF_SIZE) -> LimiterResul
     result = dict(
         spec=s, r7=r7, r9=r9, r10=r10, r11=r11, r12=r12, r13=r13, i_trip_min=float(v["i_trip_min"]),
         i_trip_max=float(v["i_trip_max"]), i_trip_nominal=float(v_nominal / r7), v_cs_nominal=float(v_nominal),
-        p_r7=float(v["i_trip_max"]) ** 2 * r7 * (1 + s["r7_tolerance"]), margin_low=m_lo, margin_high=m_hi,
+        p_r7=float(v["i_trip_max"]) ** 2 * r7 * (1 - s["r7_tolerance"]), margin_low=m_lo, margin_high=m_hi,
         headroom_min=float(v["headroom_min"]), divider_current=float(v["divider_current"]),
         binding="the lowest trip current" if m_lo <= m_hi else "the highest trip current",
         r7_relaxed=found["r7_relaxed"], nodes=out.nodes, r7_tried=found["tried"], margin_bound=out.bound,

@@ -7,11 +7,11 @@ from __future__ import annotations
 
 from ...core import Source
 from . import claims, data
-from .circuit import cap_cd_for, constant_nf_hz, max_delay_per_nf
+from .circuit import cap_cd_for, constant_k, max_delay
 
 SOURCE = Source(name=data.NAME, title="TDA5341 start and commutation (excerpt)", parameters=data.PARAMETERS,
                 equations_module=f"{__name__}.equations",
                 build_claims=claims.build, errata=data.ERRATA)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 
-__all__ = ["SOURCE", "cap_cd_for", "constant_nf_hz", "equation", "evaluate", "max_delay_per_nf", "params"]
+__all__ = ["SOURCE", "cap_cd_for", "constant_k", "equation", "evaluate", "max_delay", "params"]

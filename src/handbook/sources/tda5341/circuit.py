@@ -22,8 +22,8 @@ def cap_cd_for(f_c1, i_charge, v_low, v_high):
     return i_charge / ((v_high - v_low) * f_c1)
 
 
-def constant_nf_hz(i_charge, v_low, v_high):
-    """The 'C = K / f_C1 (nF)' constant: K = I / dV in nF Hz.
+def constant_k(i_charge, v_low, v_high):
+    """The constant K of the excerpt's 'C = K / f_C1': K = I / dV, F Hz (the excerpt prints it in nF Hz).
 
     Parameters
     ----------
@@ -35,16 +35,18 @@ def constant_nf_hz(i_charge, v_low, v_high):
     Returns
     -------
     float
-        K, nF Hz (not SI: the excerpt's constant, C in nF = K / f_C1 in Hz).
+        K, F Hz (A/V); times 1e9 it is the excerpt's nF Hz.
     """
-    return i_charge / (v_high - v_low) * 1e9
+    return i_charge / (v_high - v_low)
 
 
-def max_delay_per_nf(i_discharge, v_low, v_high):
-    """Longest delay (below f_C1): discharge across the window at I_dis, in ms per nF.
+def max_delay(cap, i_discharge, v_low, v_high):
+    """Longest delay (below f_C1): the capacitor discharged across the window at I_dis, C dV / I_dis.
 
     Parameters
     ----------
+    cap : float
+        CAPCDM, F (the excerpt quotes the delay for 1 nF).
     i_discharge : float
         CAPCDM discharge current, A.
     v_low, v_high : float
@@ -53,6 +55,6 @@ def max_delay_per_nf(i_discharge, v_low, v_high):
     Returns
     -------
     float
-        The longest delay per nF of CAPCDM, ms/nF (not SI: as the excerpt prints it).
+        The longest delay, s.
     """
-    return (v_high - v_low) / i_discharge * 1e-9 * 1e3
+    return cap * (v_high - v_low) / i_discharge

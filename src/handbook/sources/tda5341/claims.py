@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from ...core import Claim, Printed, series
 from ..an94002.circuit import oscillation_frequency
-from .circuit import cap_cd_for, constant_nf_hz, max_delay_per_nf
+from .circuit import cap_cd_for, constant_k, max_delay
 from .data import NAME, TDA5144
 
 START, CD, CMP = "start", "commutation", "tda5144"
@@ -48,7 +48,7 @@ def build() -> list[Claim]:
               reason="2.28 V - 0.87 V"),
         Claim(id="tda5341-constant", where=f"{NAME} CAPCDM", quantity="CAPCDM = K / f_C1 (nF), K",
               printed=Printed("7092", "1"), chapter=CD,
-              compute=lambda p: constant_nf_hz(p["i_charge"], p["v_low"], p["v_high"]),
+              compute=lambda p: constant_k(p["i_charge"], p["v_low"], p["v_high"]) * 1e9,  # F Hz -> nF Hz
               reason="10 uA / 1.41 V = 7092.2 nF Hz (typical current, no tolerance)"),
         Claim(id="tda5341-capcdm", where=f"{NAME} CAPCDM", quantity="CAPCDM for f_C1 = 1600 Hz",
               printed=Printed("4.43", "nF"), chapter=CD, compute=_capcdm, reason="7092 / 1600 = 4.433 nF"),
@@ -57,11 +57,11 @@ def build() -> list[Claim]:
               reason="the E12 value at or above 4.43 nF (no tolerance margin: 4.7 nF - 5 % = 4.47 nF still fits)"),
         Claim(id="tda5341-max-delay", where=f"{NAME} CAPCDM", quantity="maximum delay per nF (discharge 1.41 V at 20 uA)",
               printed=Printed("0.070", "ms"), chapter=CD,
-              compute=lambda p: max_delay_per_nf(p["i_discharge"], p["v_low"], p["v_high"]) * 1e-3,
+              compute=lambda p: max_delay(1e-9, p["i_discharge"], p["v_low"], p["v_high"]),  # for 1 nF
               reason="1.41 V / 20 uA = 0.0705 ms per nF"),
         Claim(id="tda5144-constant", where=TDA5144, quantity="TDA5144: C = K / f_C1 (nF), K",
               printed=Printed("6231", "1"), chapter=CMP,
-              compute=lambda p: constant_nf_hz(p["tda5144_i_charge"], p["tda5144_v_low"], p["tda5144_v_high"]),
+              compute=lambda p: constant_k(p["tda5144_i_charge"], p["tda5144_v_low"], p["tda5144_v_high"]) * 1e9,
               reason="8.1 uA / 1.3 V = 6230.8 nF Hz"),
         Claim(id="tda5144-cap", where=TDA5144, quantity="TDA5144 example: C for f_C1 = 400 Hz",
               printed=Printed("15.6", "nF"), chapter=CMP,
@@ -70,8 +70,7 @@ def build() -> list[Claim]:
               reason="6231 / 400 = 15.58 nF"),
         Claim(id="tda5144-max-delay", where=TDA5144, quantity="TDA5144: maximum delay per nF",
               printed=Printed("0.076", "ms"), chapter=CMP,
-              compute=lambda p: max_delay_per_nf(p["tda5144_i_discharge"], p["tda5144_v_low"],
-                                                 p["tda5144_v_high"]) * 1e-3,
+              compute=lambda p: max_delay(1e-9, p["tda5144_i_discharge"], p["tda5144_v_low"], p["tda5144_v_high"]),
               reason="1.3 V / 16.2 uA = 0.0802 ms per nF; 0.076 would need 1.23 V or 17.1 uA",
               consequence="the fixed delay below f_C1 is about 5 % longer than the datasheet's formula says: small, "
                           "but the formula does not follow from its own numbers"),
