@@ -14,7 +14,7 @@ import pytest
 #: test files kept on one worker because their module-scoped fixture is expensive to build twice
 TOGETHER = ("tests/test_browser.py", "tests/design/converter/", "tests/report/test_plots.py")
 #: units sent first, longest first (measured on the 2-core machine); the rest follow in collection order
-FIRST = ("tests/test_browser.py", "tests/design/limiter/test_limiter_search.py::test_branch_and_bound",
+FIRST = ("tests/test_browser.py", "tests/design/limiter/test_limiter_search.py::test_the_search",
          "tests/design/converter/", "tests/design/limiter/test_limiter_search.py::test_every_design",
          "tests/design/test_fuzz_specs.py")
 

@@ -4,8 +4,8 @@ design re-verified at every tolerance corner.
 
 * :mod:`~handbook.design.commutation`: the TDA5143/5144 timing set, CAP-CD/CAP-DC from the speed range and
   CAP-ST/CAP-TI from motor data (closed forms, exact);
-* :mod:`~handbook.design.limiter`: the op-amp limiter's whole network R7, R9..R13 (branch and bound over
-  IPOPT relaxations; exact corners);
+* :mod:`~handbook.design.limiter`: the op-amp limiter's whole network R7, R9..R13 (an exact search by
+  closed-form bounds; exact corners);
 * :mod:`~handbook.design.class_d`: the LM4651/LM4652 switching frequency, R_OSC, R_DLY, output filter and
   heat sink as one design (IPOPT, then a proven series search);
 * :mod:`~handbook.design.converter`: the TCA5600 dc/dc converter by eq 1 to 6a, down to a real coil (the
@@ -14,7 +14,7 @@ design re-verified at every tolerance corner.
 Shared by all four: :mod:`~handbook.design.schema` (every key's default, unit, range, meaning, and the results
 each design reports), :mod:`~handbook.design.spec` (reads and runs a TOML specification),
 :mod:`~handbook.design.bom` (the bill of materials), :mod:`~handbook.design.common` (a table's checks, the
-result base class), :mod:`~handbook.design.branch_bound` (the series search) and
+result base class) and
 :mod:`~handbook.design.solvers` (casadi's silent IPOPT, and :class:`~handbook.design.solvers.Infeasible`, which
 a specification nothing can meet raises).
 """

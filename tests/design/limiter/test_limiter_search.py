@@ -62,24 +62,21 @@ def _reduced_spec(draw, r7_tolerance, r9_series):
 @pytest.mark.parametrize("r9_series", ["E6", "E12"])
 @settings(max_examples=50, deadline=None, derandomize=True, suppress_health_check=list(HealthCheck))
 @given(data=st.data())
-def test_branch_and_bound_equals_enumeration_on_reduced_series(r7_tolerance, r9_series, data):
-    """The small nodes that are cheaper to enumerate than to relax are left to IPOPT here (leaf_size 600),
-    so the branch and bound's pruning by relaxation bounds is what is compared with enumeration (200 specs in
-    four parts, so that both cores share them)."""
+def test_the_search_equals_enumeration_on_reduced_series(r7_tolerance, r9_series, data):
+    """The exact search's smallest R7, its best network within GAP and the bound it proves, against the
+    oracle's every network at every corner (200 specs in four parts, so that both cores share them)."""
     spec = _reduced_spec(data.draw, r7_tolerance, r9_series)
     expected = enumerate_limiter(spec)
     try:
-        got = limiter.design(spec, leaf_size=600)
+        got = limiter.design(spec)
     except Infeasible:
         assert expected is None
         return
-    assert expected is not None and got.r7 == expected[0]
+    assert expected is not None and got.r7 == expected[0] and got.r7_proven and got.best_proven
     worst = min(got.margin_low, got.margin_high)
-    # the bound the search proves is a true bound, and where the search settled the tie-break (its node
-    # budget did not run out first) the margin is within GAP of the best
+    # the bound the search proves is a true bound, and the margin is within GAP of the best
     assert worst <= expected[2] + 1e-9 <= got.margin_bound + 2e-9
-    if got.margin_bound - worst <= limiter.GAP + 1e-12:
-        assert worst >= expected[2] - limiter.GAP - 1e-9
+    assert worst >= expected[2] - limiter.GAP - 1e-9
     lo, hi, head, _ = limiter_corners(got.r7, got.network, got.spec)
     assert lo >= spec["i_no_trip"] * (1 + spec["min_margin"]) * (1 - 1e-9)
     assert hi <= spec["i_must_trip"] * (1 - spec["min_margin"]) * (1 + 1e-9) and head >= spec["input_headroom"] - 1e-9
@@ -110,9 +107,9 @@ def test_every_design_holds_at_every_corner(i_no, ratio, off, vz, rt, tc, pins, 
     assert all(getattr(r, n) == spec[n] for n in pinned)
 
 
-def test_a_relaxation_ipopt_calls_infeasible_is_not_taken_as_proof():
-    """IPOPT reports this spec's root relaxation locally infeasible, yet exhaustive enumeration finds a
-    network with R7 = 27 mOhm; the design must find it too (the bound falls back to the exact vertex bound)."""
+def test_a_spec_whose_relaxation_ipopt_calls_infeasible():
+    """IPOPT reports this spec's continuous relaxation locally infeasible, yet exhaustive enumeration finds a
+    network with R7 = 27 mOhm; the search, which rests on no solver's verdict, finds it too."""
     spec = dict(i_no_trip=4.316992187527374, resistor_tolerance=0.01, r7_tolerance=0.01, zener_voltage=12.0,
                 zener_tolerance=0.02, offset=0.0071812903122027965, input_bias=1e-7, min_margin=0.0,
                 input_offset_current=1.5e-7, divider_current_max=0.1, input_headroom=2.0, r7_series="E12", r7_min=0.01,
@@ -125,11 +122,12 @@ def test_a_relaxation_ipopt_calls_infeasible_is_not_taken_as_proof():
     assert limiter.design(spec).r7 == pytest.approx(expected[0])
 
 
-def test_a_node_ipopt_calls_infeasible_is_not_dropped():
+def test_issue_18s_spec_designs_0_698_ohm_with_the_best_network():
     """Issue 18's spec: IPOPT reports the relaxation of R7 = 0.698 ohm infeasible, yet the audit's network
-    (R9..R13 = 402, 59 000, 95 300, 8 660 (pinned), 17 800 ohm) meets it with margins 5.04 % / 9.98 % against 5 %.
-    A box IPOPT calls infeasible from its middle is tried again from its corners before it is dropped, so the
-    design finds 0.698 ohm (or smaller), and what it returns holds at every corner of the oracle."""
+    (R9..R13 = 402, 59 000, 95 300, 8 660 (pinned), 17 800 ohm) meets it with margins 5.04 % / 9.98 % against 5 %,
+    and the audit's best network at 0.698 ohm reaches 26.9 %. The search finds 0.698 ohm (the smallest R7 of the
+    range above 0.695 ohm), a network within GAP of 26.9 %, and what it returns holds at every corner of the
+    oracle."""
     spec = dict(i_no_trip=1.5375553447469856, i_must_trip=3.759833528645647, min_margin=0.05, resistor_tolerance=0.005,
                 r7_tolerance=0.02, zener_voltage=20.454639911244172, zener_tolerance=0.02, zener_tc=0.01899320811016074,
                 temp_span=59.00419989365312, offset=0.032682535995104574, input_bias=5e-06, input_offset_current=5e-06,
@@ -139,7 +137,8 @@ def test_a_node_ipopt_calls_infeasible_is_not_dropped():
     audit = limiter_corners(0.698, (402.0, 59000.0, 95300.0, 8660.0, 17800.0), limiter.checked(spec))
     assert audit[0] >= spec["i_no_trip"] * 1.05 and audit[1] <= spec["i_must_trip"] * 0.95  # the audit's network holds
     r = limiter.design(spec)
-    assert r.r7 <= 0.698 + 1e-12
+    assert r.r7 == 0.698 and r.r7_proven and r.best_proven
+    assert min(r.margin_low, r.margin_high) >= 0.269 - limiter.GAP
     lo, hi, head, i_div = limiter_corners(r.r7, r.network, r.spec)
     assert lo >= spec["i_no_trip"] * 1.05 * (1 - 1e-9) and hi <= spec["i_must_trip"] * 0.95 * (1 + 1e-9)
     assert head >= spec["input_headroom"] - 1e-9 and i_div <= spec["divider_current_max"] * (1 + 1e-9)

@@ -1,7 +1,9 @@
 """The op-amp current limiter (AN94002 figure 3) designed as a whole network: R7, R9, R10, R11, R12, R13.
 
 * :mod:`.model`: the network at every tolerance corner (exact), the spec's checks and each resistor's choices;
-* :mod:`.search`: the smallest series R7 and the network of the largest worst margin (branch and bound);
+* :mod:`.search`: the smallest series R7 and the network of the largest worst margin (exact, by closed-form
+  bounds);
+* :mod:`.relaxation`: the continuous problem (casadi, IPOPT), for the figures of an infeasible spec's message;
 * :mod:`.explain`: what can be met when nothing meets the spec;
 * :mod:`.result`: the result, verified at every corner, and its warnings;
 * :mod:`.analysis`: which tolerance eats the window, and a Monte Carlo lot.
@@ -11,7 +13,7 @@ from .analysis import SPREAD_SOURCES, monte_carlo_trip
 from .analysis import sensitivity as _sensitivity
 from .model import TABLE, checked, zener_range
 from .result import IC_LIMIT_MIN, LimiterResult, design, judge, warnings
-from .search import GAP, LEAF_SIZE
+from .search import GAP
 from .search import enumerate_series as _enumerate_series
 
 
@@ -84,5 +86,5 @@ def sensitivity(result: LimiterResult) -> list[dict]:
             for name, share, margin in _sensitivity(result.r7, result.network, result.spec)]
 
 
-__all__ = ["GAP", "IC_LIMIT_MIN", "LEAF_SIZE", "SPREAD_SOURCES", "TABLE", "LimiterResult", "checked", "design",
+__all__ = ["GAP", "IC_LIMIT_MIN", "SPREAD_SOURCES", "TABLE", "LimiterResult", "checked", "design",
            "enumerate", "explain", "judge", "monte_carlo_trip", "sensitivity", "warnings", "zener_range"]

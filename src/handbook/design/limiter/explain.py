@@ -2,7 +2,8 @@
 
 In order: the input headroom alone (its best over the resistor ranges, exact at the range's vertices by
 the corner proof of :mod:`.model`); the margin (the best worst margin any continuous network
-reaches, from the relaxation); a pinned resistor (the design repeated without each pin); the ranges.
+reaches, from the relaxation: IPOPT's figure, a local optimum); a pinned resistor (the exact search repeated
+without each pin); the ranges.
 """
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ from ...core import InputError
 from ..solvers import Infeasible
 from . import model as net
 from .model import TABLE, best_headroom, choices
-from .search import LEAF_SIZE, Relaxation, solve
+from .relaxation import Relaxation, smallest_r7
+from .search import solve
 
 
 def best_margin(s: dict) -> float | None:
@@ -62,7 +64,7 @@ def least_divider_current(s: dict) -> float:
     return float(net.divider_current(tuple(choices(s, n)[-1] for n in net.DIVIDER), s))
 
 
-def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
+def _reason(s: dict) -> tuple[str, dict]:
     least = least_divider_current(s)
     if least > s["divider_current_max"]:
         return (f"every network draws at least {least * 1e3:.3g} mA from the zener node, more than divider_current_max "
@@ -85,23 +87,21 @@ def _reason(s: dict, r7_relaxed: float | None) -> tuple[str, dict]:
         return (start + f"the best worst margin any network reaches is {margin:.2%}; lower min_margin to that, widen "
                 f"the window (now i_must_trip / i_no_trip = {s['i_must_trip'] / s['i_no_trip']:.3g}) or use tighter "
                 "tolerances", {"min_margin_max": margin})
+    r7_relaxed = smallest_r7(s)
+    hint = f" (IPOPT's continuous network needs R7 >= {r7_relaxed:.3g} ohm)" if r7_relaxed else ""
     return (f"no {s['r7_series']} R7 within {s['r7_min']:g} .. {s['r7_max']:g} ohm has a series network meeting "
-            f"the spec (the continuous relaxation needs R7 >= {(r7_relaxed or float('nan')):.3g} ohm): widen the R7 "
-            f"range or use finer series", {"r7_relaxed": r7_relaxed})
+            f"the spec{hint}: widen the R7 range or use finer series", {"r7_relaxed": r7_relaxed})
 
 
-def explain(s: dict, r7_relaxed: float | None) -> Infeasible:
-    """The Infeasible that says why, and what would be met. A pinned resistor is blamed when freeing it
-    alone lifts the cause (the headroom's exact best, or the relaxation's best margin, reaches the spec) and
-    the search then finds a series network that meets the whole spec; a pin whose own range holds no value of
-    its series is not freed.
+def explain(s: dict) -> Infeasible:
+    """The Infeasible that says why, and what would be met. A pinned resistor is blamed when the exact search,
+    that pin freed, finds a series network that meets the whole spec (the divider current's and the headroom's
+    exact bests are checked first); a pin whose own range holds no value of its series is not freed.
 
     Parameters
     ----------
     s : Mapping
         The checked ``[current_limiter]`` table (SI units) that no network meets.
-    r7_relaxed : float or None
-        The relaxation's smallest R7, ohm (None: the search found none, or stopped before it).
 
     Returns
     -------
@@ -116,14 +116,14 @@ def explain(s: dict, r7_relaxed: float | None) -> Infeasible:
     InputError
         When a free resistor's range holds no value of its series.
     """
-    message, achievable = _reason(s, r7_relaxed)
+    message, achievable = _reason(s)
     for name in (n for n in ("r7",) + net.DIVIDER if s[n] is not None):
         free = {**s, name: None}
         try:
             lifted = _lifts(free, s, achievable)
         except InputError:  # its range holds no value of its series: freeing it is no way out
             continue
-        found = solve(free, LEAF_SIZE)["r7"] if lifted else None
+        found = solve(free)["r7"] if lifted else None
         if found is not None:
             return Infeasible(TABLE, f"{name} = {s[name]:g} ohm (pinned) makes the spec infeasible: {message}. Left "
                              f"free, a network of the {s[name + '_series']} range {s[name + '_min']:g} .. "
@@ -138,5 +138,4 @@ def _lifts(free: dict, s: dict, achievable: dict) -> bool:
         return least_divider_current(free) <= s["divider_current_max"]
     if "headroom_max" in achievable:
         return best_headroom(free) >= s["input_headroom"]
-    margin = best_margin(free)
-    return margin is not None and margin >= s["min_margin"]
+    return True  # the margin: the exact search decides

@@ -6,13 +6,14 @@ bias current; exact) the trip current stays inside [i_no_trip (1 + m), i_must_tr
 ``min_margin``, and both op-amp inputs stay ``input_headroom`` below the supply. Objective: the smallest R7
 (least loss and least drop at any motor current); among networks with that R7, the largest worst margin.
 
-Solution. R7 comes first: IPOPT minimises ln R7 over the continuous relaxation of all six resistors, a
-lower bound for every series design. Then, for each series R7 from that bound up, a branch and bound
-(:mod:`handbook.design.branch_bound`, IPOPT on every node's relaxation) maximises the worst margin over the five divider
-resistors; the first R7 whose best network reaches ``min_margin`` is the answer. With four free divider
-resistors on E96 there are about 10^11 networks per R7, far too many to enumerate; on E6/E12 dividers the
-tests and ``tools/benchmark.py`` check that this search finds exactly what enumeration finds. The chosen
-network is re-verified at every corner by :func:`.model.verify`.
+Solution. An exact search (:mod:`.search`): for each series R7 from the smallest up, every level shift
+(R12, R13) gets a closed-form interval that the reference ratio (R9 + R10) / R11 must lie in for the margins
+to be met (a bound valid for every network, not a solver's verdict), and the reference networks inside it
+are evaluated exactly; the first R7 with a network is the smallest, and for it the network of the largest
+worst margin is settled within GAP. With four free divider resistors on E96 there are about 10^11 networks
+per R7, far too many to enumerate; on E6/E12 dividers the tests and ``tools/benchmark.py`` check that this
+search finds exactly what enumeration finds. The chosen network is re-verified at every corner by
+:func:`.model.verify`.
 """
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ from ..common import Result, reported
 from . import model as net
 from .explain import explain
 from .model import TABLE, checked
-from .search import GAP, LEAF_SIZE, solve
+from .search import GAP, solve
 
 #: the motor ICs' own output current limits, minimum (datasheet_facts: TDA5144 / TDA5143T datasheets)
 IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
@@ -48,12 +49,13 @@ class LimiterResult(Result):
     headroom_min: float = reported('V', 'least op-amp input distance below the supply')
     divider_current: float = reported('A', 'current the dividers draw from the zener node')
     margin_bound: float = reported('%', 'no network with this R7 has a worst margin above')  # proven by the search
-    unproven: tuple = reported('ohm', 'smaller R7 values the search left unsettled (node limit)')
+    r7_proven: bool = reported('', 'R7 proven the smallest (every smaller one ruled out)')
+    best_proven: bool = reported('', 'worst margin proven within 0.25 point of the best with this R7')
+    unproven: tuple = reported('ohm', 'smaller R7 values the search left unsettled (evaluation limit)')
     binding: str = reported('', 'binding')
     warnings: tuple = reported('', 'warnings')
-    r7_relaxed: float
-    nodes: int
-    r7_tried: int
+    evaluated: int  # networks the search evaluated exactly
+    r7_tried: int  # R7 values whose networks it searched (the others ruled out by the bound alone)
 
     table = TABLE
 
@@ -62,15 +64,13 @@ class LimiterResult(Result):
         return self.r9, self.r10, self.r11, self.r12, self.r13
 
 
-def design(spec: dict | None = None, leaf_size: int = LEAF_SIZE) -> LimiterResult:
+def design(spec: dict | None = None) -> LimiterResult:
     """The smallest series R7 with the divider network of the largest worst margin; verified at every corner.
 
     Parameters
     ----------
     spec : dict or None
         The ``[current_limiter]`` table (keys of :data:`handbook.design.schema.TABLES`); defaults fill the rest.
-    leaf_size : int
-        A branch-and-bound node holding at most this many networks is evaluated whole instead of relaxed.
 
     Returns
     -------
@@ -85,10 +85,10 @@ def design(spec: dict | None = None, leaf_size: int = LEAF_SIZE) -> LimiterResul
         When no network of the series meets the spec; its message says what can be met.
     """
     s = checked(spec)
-    found = solve(s, leaf_size)
-    r7, network, out = found["r7"], found["network"], found["outcome"]
+    found = solve(s)
+    r7, network = found["r7"], found["network"]
     if r7 is None:
-        raise explain(s, found["r7_relaxed"])
+        raise explain(s)
     v = net.verify(r7, network, s)
     m_lo, m_hi = float(v["margin_low"]), float(v["margin_high"])
     r9, r10, r11, r12, r13 = network
@@ -99,8 +99,8 @@ def design(spec: dict | None = None, leaf_size: int = LEAF_SIZE) -> LimiterResul
         p_r7=float(v["i_trip_max"]) ** 2 * r7 * (1 - s["r7_tolerance"]), margin_low=m_lo, margin_high=m_hi,
         headroom_min=float(v["headroom_min"]), divider_current=float(v["divider_current"]),
         binding="the lowest trip current" if m_lo <= m_hi else "the highest trip current",
-        r7_relaxed=found["r7_relaxed"], nodes=out.nodes, r7_tried=found["tried"], margin_bound=out.bound,
-        unproven=found["unproven"])
+        evaluated=found["evaluated"], r7_tried=found["tried"], margin_bound=found["bound"],
+        r7_proven=not found["unproven"], best_proven=found["proven"], unproven=found["unproven"])
     return LimiterResult(**result, warnings=tuple(warnings(result, s)))
 
 
@@ -119,7 +119,7 @@ def warnings(r: dict, s: dict) -> list[str]:
     list of str
         One sentence per warning, none when there is nothing to say: the highest trip current above the IC's
         own minimum output limit (:data:`IC_LIMIT_MIN`, A), R7's loss above its rating, an R7 or a tie-break the
-        search did not settle (its node limit).
+        search did not settle (its evaluation limit).
     """
     out = []
     limit = IC_LIMIT_MIN[s["ic"]]
@@ -131,12 +131,12 @@ def warnings(r: dict, s: dict) -> list[str]:
                    f"trip current: more than its {s['r7_power_rating']:g} W rating (r7_power_rating)")
     if r["unproven"]:
         out.append(f"not proven the smallest R7: the search for R7 = "
-                   f"{', '.join(eng(v, 'Ω', 3) for v in r['unproven'])} stopped at its node limit without a network, "
+                   f"{', '.join(eng(v, 'Ω', 3) for v in r['unproven'])} stopped at its evaluation limit without a network, "
                    "so a network with a smaller R7 may exist")
     worst = min(r["margin_low"], r["margin_high"])
     if r["margin_bound"] - worst > GAP + 1e-12:
-        out.append(f"the worst margin {worst:.2%} is not proven the best for this R7: the search stopped at its node "
-                   f"limit with networks of up to {r['margin_bound']:.2%} not ruled out")
+        out.append(f"the worst margin {worst:.2%} is not proven the best for this R7: the search stopped at its "
+                   f"evaluation limit with networks of up to {r['margin_bound']:.2%} not ruled out")
     return out
 
 

@@ -1,251 +1,310 @@
-"""The search for the smallest series R7 and, with it, the divider network of the largest worst margin.
+"""The limiter's search, exact by construction: every pruning decision rests on a bound that holds for every
+network it discards, never on a local solver's verdict.
 
-R7 comes first: IPOPT minimises ln R7 over the continuous relaxation of all six resistors, a lower bound for
-every series design. Then, for each series R7 from that bound up, a branch and bound
-(:mod:`handbook.design.branch_bound`, IPOPT on every node's relaxation) maximises the worst margin over the
-five divider resistors; the first R7 whose best network reaches ``min_margin`` is the answer. With four
-free divider resistors on E96 there are about 10^11 networks per R7, far too many to enumerate; on E6/E12
-dividers the tests and ``tools/benchmark.py`` check that this search finds exactly what enumeration finds
-(:func:`enumerate_series`).
+The network splits in two: the level shift P = (R12, R13) and the reference Q = (R9 + R10, R11). At every
+corner, with A = R13 / (R12 + R13), B = R11 / (R9 + R10 + R11) and the bias error E (:func:`.model.bias_error`
+times A), the trip voltage is (:mod:`.model`)
+
+    V_cs = V_D1 (1 - B / A) -+ (V_os + E) / A,      E = |R_p - R_m| I_b + min(R_p, R_m) I_os >= R_p min(I_b, I_os)
+
+(R_p = R12 || R13, R_m = (R9 + R10) || R11). Q enters the bias-free part only through B, whose extremes over
+Q's tolerances are 1 / (1 + y (1 -+ t) / (1 +- t)), y = (R9 + R10) / R11: so for one P, "both margins at least
+theta" can hold only for y inside an interval [y1, y2] written in closed form (with E at its lower bound, which
+only widens it). Every P gets the best theta its interval allows (an upper bound on any network with that P);
+the P are taken best bound first, and for each the reference networks inside its interval (every R11, the
+sums R9 + R10 in a sorted array) are evaluated exactly (:func:`.model.scores`). The search stops when no P
+left can beat the best network found by more than :data:`GAP` (or, for the smallest R7, reach ``min_margin``):
+the smallest R7 and the tie-break are then proven, up to :data:`MAX_EVALUATIONS` exact evaluations.
 """
 from __future__ import annotations
 
-import functools
-import itertools
 import math
 
-import casadi as ca
 import numpy as np
 
 from ...core import InputError
-from .. import branch_bound
-from ..solvers import IPOPT_OPTIONS
-from . import model as net
-from .model import RESISTORS, best_headroom, checked, choices, scores
+from .model import DIVIDER, RESISTORS, checked, choices, scores, zener_range
 
-#: the tie-break is settled to within this worst margin (0.25 percentage point): the bound proves no
-#: network with the same R7 is better by more
-GAP = 2.5e-3
-#: a node holding at most this many networks is evaluated whole (about the cost of one IPOPT solve)
-LEAF_SIZE = 2000
-#: relaxations spent on one R7 with no network found yet before it is given up as unsettled (reported in
-#: ``unproven``, and warned about)
-MAX_NODES_UNSOLVED = 3000
 #: the most divider networks :func:`enumerate_series` evaluates (a few hundred MB of numpy arrays)
 ENUMERATE_MAX = 2_000_000
+#: the tie-break is settled to within this worst margin (0.25 percentage point)
+GAP = 2.5e-3
+#: exact network evaluations one R7 may spend before its search is reported unsettled
+MAX_EVALUATIONS = 20_000_000
+#: networks evaluated at a time while looking for the first that meets the spec
+CHUNK = 20_000
+#: relative widening of every closed-form interval (rounding may not cost a network)
+SLACK = 1e-9
 
 
-#: the spec values the relaxation takes as parameters (one NLP, built once per process, serves every spec)
-RELAX_KEYS = ("zener_voltage", "zener_tolerance", "zener_tc", "temp_span", "input_bias", "input_offset_current",
-              "offset", "resistor_tolerance", "r7_tolerance", "i_no_trip", "i_must_trip", "input_headroom",
-              "divider_current_max")
-
-
-@functools.cache
-def _solvers():
-    """(cold, warm) IPOPT instances of the relaxation, the spec's values as parameters."""
-    x, w, q = ca.SX.sym("x", 7), ca.SX.sym("w"), ca.SX.sym("q", len(RELAX_KEYS) + 1)
-    s = dict(zip(RELAX_KEYS, ca.vertsplit(q[:-1])))
-    r7, r, t = ca.exp(x[0]), tuple(ca.exp(x[i]) for i in range(1, 6)), x[6]
-    lows, highs = net.trip_voltage_corners(r, s, relaxed=True)
-    g = ([net.margins(lo, 0.0, r7, s)[0] - t for lo in lows]
-         + [net.margins(0.0, hi, r7, s)[1] - t for hi in highs]
-         + [(v - s["input_headroom"]) / q[-1] for v in net.headroom_corners(r, s)]
-         + [1 - net.divider_current(r, s) / s["divider_current_max"]])
-    nlp = {"x": x, "p": ca.vertcat(w, q), "f": w * x[0] - (1 - w) * x[6], "g": ca.vertcat(*g)}
-    base = {**IPOPT_OPTIONS, "ipopt.tol": 1e-9, "ipopt.mu_strategy": "adaptive"}
-    # a child node starts from its parent's solution and multipliers: a handful of iterations, not 30
-    warm = {**base, "ipopt.warm_start_init_point": "yes", "ipopt.mu_init": 1e-5, "ipopt.warm_start_bound_push": 1e-9,
-            "ipopt.warm_start_mult_bound_push": 1e-9}
-    return ca.nlpsol("limiter", "ipopt", nlp, base), ca.nlpsol("limiter_warm", "ipopt", nlp, warm)
-
-
-class Relaxation:
-    """The continuous problem in x = (ln R7, ln R9 .. ln R13, t), t the worst margin, for one spec; called
-    with a node's bounds. Weight w = 1: minimise ln R7 (t >= min_margin); w = 0: maximise t."""
+class Split:
+    """The two halves of every network of the spec's series: level shifts P and references Q."""
 
     def __init__(self, s: dict):
-        # the offset current counts up to twice the bias current (beyond that the two currents are free)
-        values = {**s, "input_offset_current": min(s["input_offset_current"], 2 * s["input_bias"])}
-        self.q = [float(values[k]) for k in RELAX_KEYS] + [max(s["input_headroom"], 1.0)]
-        self.solver, self.warm = _solvers()
+        self.s = s
+        t, ib = s["resistor_tolerance"], s["input_bias"]
+        ios = min(s["input_offset_current"], 2 * ib)
+        self.vz = np.array(zener_range(s))
+        r = {n: choices(s, n) for n in DIVIDER}
+        r12, r13 = (x.ravel() for x in np.meshgrid(r["r12"], r["r13"], indexing="ij"))
+        a12 = r12[:, None] * (1 + t * np.array([-1, -1, 1, 1]))
+        a13 = r13[:, None] * (1 + t * np.array([-1, 1, -1, 1]))
+        head_p = ((self.vz[0] * a12 - ib * a12 * a13) / (a12 + a13)).min(axis=1)
+        i_p = self.vz[1] / ((r12 + r13) * (1 - t))
+        keep = (head_p >= s["input_headroom"] - 1e-12) & (i_p < s["divider_current_max"] * (1 + 1e-12))
+        self.r12, self.r13, self.i_p = r12[keep], r13[keep], i_p[keep]
+        self.a = (a13 / (a12 + a13))[keep]  # (nP, 4): A at each corner of (R12, R13)
+        self.eps = (a12 * a13 / (a12 + a13))[keep] * min(ios, ib)  # the least bias error there
+        sums = (r["r9"][:, None] + r["r10"][None, :]).ravel()
+        order = np.argsort(sums, kind="stable")
+        self.sums = sums[order]
+        self.i9, self.i10 = np.unravel_index(order, (len(r["r9"]), len(r["r10"])))
+        self.r9, self.r10, self.r11 = r["r9"], r["r10"], r["r11"]
+        self.rho = (1 - t) / (1 + t)
+        self.y_lo, self.y_hi = self.sums[0] / self.r11[-1], self.sums[-1] / self.r11[0]
+        self.head_sum = self._head_sums(t, ib)
 
-    def solve(self, lb, ub, x0, weight: float, t_min: float = -10.0, warm: dict | None = None):
-        """(x, status, state) of the box lb..ub (resistor values), or None when IPOPT reports it infeasible
-        (a local verdict: the callers bound such a box by :func:`vertex_bound` before dropping it).
+    def _head_sums(self, t: float, ib: float) -> np.ndarray:
+        """For each R11, the least R9 + R10 whose V_- headroom, (S (V_D1,lo - I_b R11)) / (S + R11) at every
+        corner, reaches input_headroom (increasing in S where V_D1,lo - I_b R11 > input_headroom); +inf where
+        none can, -inf where the form gives no bound."""
+        h, out = self.s["input_headroom"], np.full(len(self.r11), -np.inf)
+        for g11 in (-1, 1):
+            a11 = self.r11 * (1 + t * g11)
+            c = self.vz[0] - ib * a11
+            with np.errstate(divide="ignore", invalid="ignore"):
+                need = np.where(c > h, h * a11 / (c - h), np.where(h > 0, np.inf, -np.inf))
+            out = np.maximum(out, need / (1 - t))  # the sum at its low end must still reach it
+        return out
+
+    def interval(self, theta, r7: float, p=slice(None)):
+        """[y1, y2]: where y = (R9 + R10) / R11 must lie for both margins to reach ``theta`` with level shift(s)
+        ``p`` (a necessary condition: the bias error at its least); empty when y1 > y2.
 
         Parameters
         ----------
-        lb, ub : array of float
-            The box: lowest and highest R7, R9..R13, ohm.
-        x0 : array of float
-            The starting point (ln R7, ln R9 .. ln R13, t).
-        weight : float
-            1: minimise ln R7 (t >= ``t_min``); 0: maximise the worst margin t.
-        t_min : float
-            The least worst margin, fraction.
-        warm : dict or None
-            A parent's state (its x and multipliers) for a warm start.
+        theta : float or numpy.ndarray
+            The worst margin asked for, a fraction (one, or one per level shift of ``p``).
+        r7 : float
+            The sense resistor, nominal, ohm.
+        p : slice or numpy.ndarray
+            The level shifts (indices of the arrays of this split).
 
         Returns
         -------
-        tuple or None
-            (x: ln R7, ln R9 .. ln R13 and t; IPOPT's return status; the state for a child's warm start).
+        tuple of numpy.ndarray
+            (y1, y2), one each per level shift, clipped to the references' own range of y.
         """
-        solver = self.solver if warm is None else self.warm
-        args = dict(x0=x0, p=[weight, *self.q], lbx=[*np.log(lb), t_min], ubx=[*np.log(ub), 10.0], lbg=0, ubg=np.inf)
-        if warm is not None:
-            args.update(x0=np.clip(warm["x"], args["lbx"], args["ubx"]), lam_x0=warm["lam_x"], lam_g0=warm["lam_g"])
-        r = solver(**args)
-        status = solver.stats()["return_status"]
-        if status in ("Infeasible_Problem_Detected", "Restoration_Failed"):
-            return None
-        return np.array(r["x"]).ravel(), status, {"x": np.array(r["x"]).ravel(), "lam_x": r["lam_x"], "lam_g": r["lam_g"]}
+        s = self.s
+        big_l = (1 + theta) * s["i_no_trip"] * r7 * (1 + s["r7_tolerance"])
+        big_u = (1 - theta) * s["i_must_trip"] * r7 * (1 - s["r7_tolerance"])
+        a, eps = self.a[p], self.eps[p]
+        big_l, big_u = np.asarray(big_l), np.asarray(big_u)
+        if big_l.ndim:  # one theta per level shift
+            big_l, big_u = big_l[:, None], big_u[:, None]
+        vz = self.vz[:, None, None]
+        beta_low = (((vz - big_l) * a - s["offset"] - eps) / vz).min(axis=(0, 2))
+        beta_high = (((vz - big_u) * a + s["offset"] + eps) / vz).max(axis=(0, 2))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            y1 = np.where(beta_low > 0, (1 / beta_low - 1) / self.rho, np.inf)
+            y2 = np.where(beta_high > 0, (1 / beta_high - 1) * self.rho, np.inf)
+        return np.maximum(y1 * (1 - SLACK), self.y_lo), np.minimum(y2 * (1 + SLACK), self.y_hi)
+
+    def bounds(self, r7: float) -> np.ndarray:
+        """For every P, a bound on the worst margin any network with it can reach (bisection on the interval).
+
+        Parameters
+        ----------
+        r7 : float
+            The sense resistor, nominal, ohm.
+
+        Returns
+        -------
+        numpy.ndarray
+            One bound per level shift, a fraction (-inf where no margin above -100 % is possible).
+        """
+        lo, hi = np.full(len(self.r12), -1.0), np.full(len(self.r12), 1.0)
+        for _ in range(48):
+            mid = (lo + hi) / 2
+            y1, y2 = self.interval(mid, r7)
+            ok = y1 <= y2
+            lo, hi = np.where(ok, mid, lo), np.where(ok, hi, mid)
+        y1, y2 = self.interval(lo, r7)
+        return np.where(y1 <= y2, hi, -np.inf)  # hi: above every theta the bisection found possible
+
+    def candidates(self, ps: np.ndarray, theta, r7: float, size: int):
+        """Every network (rows R9..R13) with a level shift of ``ps`` whose y lies in that shift's interval for
+        ``theta`` and whose reference meets the headroom and its share of the divider current, ``size`` rows at
+        a time (a generator: the next rows are made only when asked for).
+
+        Parameters
+        ----------
+        ps : numpy.ndarray
+            The level shifts, indices of this split's arrays.
+        theta : float
+            The worst margin asked for, a fraction.
+        r7 : float
+            The sense resistor, nominal, ohm.
+        size : int
+            The most networks per array yielded.
+
+        Yields
+        ------
+        numpy.ndarray
+            Networks, shape (n, 5): R9, R10, R11, R12, R13 in ohm.
+        """
+        y1, y2 = self.interval(theta, r7, ps)
+        ps, y1, y2 = ps[y1 <= y2], y1[y1 <= y2], y2[y1 <= y2]
+        if not len(ps):
+            return
+        t, s = self.s["resistor_tolerance"], self.s
+        room = s["divider_current_max"] * (1 + 1e-12) - self.i_p[ps]
+        least_total = self.vz[1] / ((1 - t) * room)  # S + R11 at least this for the divider current
+        lo = np.maximum(np.maximum(y1[:, None] * self.r11, self.head_sum), least_total[:, None] - self.r11) * (1 - SLACK)
+        start = np.searchsorted(self.sums, lo.ravel(), side="left")
+        count = np.maximum(np.searchsorted(self.sums, (y2[:, None] * self.r11).ravel(), side="right") - start, 0)
+        ends = np.cumsum(count)
+        for first in range(0, int(ends[-1]), size):
+            rows = np.arange(first, min(first + size, int(ends[-1])))
+            cell = np.searchsorted(ends, rows, side="right")
+            k = start[cell] + rows - (ends[cell] - count[cell])
+            p, j11 = ps[cell // len(self.r11)], cell % len(self.r11)
+            yield np.column_stack([self.r9[self.i9[k]], self.r10[self.i10[k]], self.r11[j11], self.r12[p], self.r13[p]])
 
 
-def _root(s: dict, relax: Relaxation, lists: list) -> float | None:
-    """The relaxation's smallest R7 with every margin >= min_margin (None: no continuous network does)."""
-    lb, ub = np.array([v[0] for v in lists]), np.array([v[-1] for v in lists])
-    res = relax.solve(lb, ub, [*np.log(np.sqrt(lb * ub)), 0.0], 1.0, s["min_margin"])
-    if res is not None and res[1] in ("Solve_Succeeded", "Solved_To_Acceptable_Level") and math.isfinite(res[0][0]):
-        return math.exp(res[0][0])
-    # IPOPT found no point: a local verdict, not a proof. The bound is then the smallest R7 whose exact vertex
-    # bound over the whole divider box still allows the margin (None only when none does)
-    ok = [r7 for r7 in lists[0] if vertex_bound(float(r7), lb[1:], ub[1:], s) >= s["min_margin"] - 1e-12]
-    return float(ok[0]) if ok else None
+def _batches(order: np.ndarray, n11: int):
+    """``order`` cut into batches of about 200 000 (level shift, R11) cells."""
+    size = max(1, 200_000 // max(n11, 1))
+    return (order[i:i + size] for i in range(0, len(order), size))
 
 
-def polish(r7: float, network: tuple, s: dict, lists: list, rounds: int = 8) -> tuple[tuple, float]:
-    """Local search after the branch and bound's node budget: each divider resistor one series step either
-    way, R9 ten steps, every combination evaluated exactly; repeated while it improves the worst margin.
+def first_network(split: Split, r7: float, threshold: float) -> dict:
+    """Any network with this R7 whose worst margin reaches ``threshold``.
 
     Parameters
     ----------
+    split : Split
+        The spec's level shifts and references.
     r7 : float
-        The sense resistor, ohm.
-    network : tuple of float
-        R9..R13 to start from, ohm (series values of ``lists``).
-    s : Mapping
-        The checked ``[current_limiter]`` table (SI units).
-    lists : list of array of float
-        Each resistor's series values, R7 first, ohm.
-    rounds : int
-        At most this many improving steps.
-
-    Returns
-    -------
-    tuple
-        (the best network found, R9..R13 in ohm; its worst margin, fraction).
-    """
-    idx = [int(np.searchsorted(v, x)) for v, x in zip(lists[1:], network)]
-    best = float(scores(r7, np.array([network]), s)[0])
-    for _ in range(rounds):
-        pools = [range(max(0, j - (10 if i == 0 else 1)), min(len(v) - 1, j + (10 if i == 0 else 1)) + 1)
-                 for i, (j, v) in enumerate(zip(idx, lists[1:]))]
-        grid = np.array(list(itertools.product(*pools)))
-        cand = np.stack([lists[1 + i][grid[:, i]] for i in range(5)], axis=1)
-        sc = scores(r7, cand, s)
-        k = int(np.argmax(sc))
-        if sc[k] <= best + 1e-12:
-            break
-        best, idx = float(sc[k]), list(grid[k])
-    return tuple(float(lists[1 + i][j]) for i, j in enumerate(idx)), best
-
-
-def _best_network(r7: float, s: dict, relax: Relaxation, lists: list, threshold: float, max_nodes: int = 40,
-                  leaf_size: int = LEAF_SIZE, max_nodes_unsolved: int = MAX_NODES_UNSOLVED):
-    """Branch and bound over R9..R13 with R7 fixed: the network with the largest worst margin."""
-    def relaxed(lb, ub, state):
-        # IPOPT's "infeasible" is a local verdict: a warm start that fails is repeated cold, then from the box's
-        # two extreme corners, before the box is dropped
-        middle = np.sqrt(lb * ub)
-        starts = [(middle, state)] + [(middle, None)] * (state is not None) + [(lb, None), (ub, None)]
-        for x0, warm in starts:
-            res = relax.solve(np.r_[r7, lb], np.r_[r7, ub], [math.log(r7), *np.log(x0), 0.0], 0.0, warm=warm)
-            if res is not None:
-                break
-        else:
-            return None
-        x, status, new_state = res
-        if status not in ("Solve_Succeeded", "Solved_To_Acceptable_Level"):
-            return np.inf, np.sqrt(lb * ub), None  # cannot bound this box: keep it and split it
-        return float(x[6]) + 1e-9, np.exp(x[1:6]), new_state
-
-    return branch_bound.search(lists[1:], relaxed, lambda c: scores(r7, c, s), threshold, gap=GAP, scan=0,
-                               max_nodes=max_nodes, max_nodes_unsolved=max_nodes_unsolved, leaf_size=leaf_size,
-                               cheap_bound=lambda lb, ub: vertex_bound(r7, lb, ub, s))
-
-
-def vertex_bound(r7: float, lb, ub, s: dict) -> float:
-    """An upper bound on the worst margin of every network in the box lb..ub, from its 32 vertices alone.
-
-    For one tolerance corner (signs, zener end, offset and bias fixed) the margin is monotone in each
-    resistor (the corner proof), so its largest value over the box is at a vertex; the worst margin, a
-    minimum over corners, is at most the smallest of those maxima. -inf when some corner's headroom is
-    below the limit at every vertex (no network in the box can meet it).
-
-    Parameters
-    ----------
-    r7 : float
-        The sense resistor, ohm.
-    lb, ub : array of float
-        The box: lowest and highest R9..R13, ohm.
-    s : Mapping
-        The checked ``[current_limiter]`` table (SI units).
-
-    Returns
-    -------
-    float
-        The bound on the worst margin, fraction; -inf when no network of the box meets the headroom or the
-        divider current.
-    """
-    vert = np.array(list(itertools.product(*zip(lb, ub)))).T
-    lows, highs = net.trip_voltage_corners(tuple(vert), s)
-    m = np.concatenate(net.margins(np.stack(lows), np.stack(highs), r7, s))
-    head = np.stack(net.headroom_corners(tuple(vert), s))
-    if (head.max(axis=1) < s["input_headroom"] - 1e-12).any() or net.divider_current(ub, s) > s["divider_current_max"]:
-        return -np.inf
-    return float(m.max(axis=1).min())
-
-
-def solve(s: dict, leaf_size: int = LEAF_SIZE) -> dict:
-    """The smallest feasible series R7 and, with it, the network of the largest worst margin: {r7, network,
-    outcome, r7_relaxed, tried, unproven} (r7 None when there is none). Each R7 from the relaxation's bound
-    up gets its own branch and bound; the first that finds a network is the smallest (a search that stops at
-    its node limit without one is recorded in ``unproven``).
-
-    Parameters
-    ----------
-    s : Mapping
-        The checked ``[current_limiter]`` table (SI units).
-    leaf_size : int
-        A node holding at most this many networks is evaluated whole.
+        The sense resistor, nominal, ohm.
+    threshold : float
+        The worst margin asked for (``min_margin``), a fraction.
 
     Returns
     -------
     dict
-        "r7" (ohm, or None), "network" (R9..R13, ohm), "outcome" (the branch and bound's
-        :class:`~handbook.design.branch_bound.Outcome`), "r7_relaxed" (the relaxation's R7, ohm), "tried" (R7 values
-        searched), "unproven" (smaller R7 values, ohm, whose search stopped at its node limit).
+        "network" (R9..R13, ohm, or None: there is none, proven when "proven"), "score" (its worst margin),
+        "proven" (False: the evaluation limit stopped the search first), "evaluated" (networks evaluated).
     """
-    found = {"r7": None, "network": None, "outcome": None, "r7_relaxed": None, "tried": 0, "unproven": ()}
-    if best_headroom(s) < s["input_headroom"]:  # exact, and cheap: no network can meet the headroom
-        return found
-    lists = [choices(s, name) for name in RESISTORS]
-    relax = Relaxation(s)
-    found["r7_relaxed"] = _root(s, relax, lists)
-    if found["r7_relaxed"] is None:
-        return found
-    for r7 in lists[0][lists[0] >= found["r7_relaxed"] * (1 - 1e-9)]:
-        found["tried"] += 1
-        out = _best_network(float(r7), s, relax, lists, s["min_margin"] - 1e-12, leaf_size=leaf_size)
-        if out.choice is not None and not out.proven:  # the node budget ran out: polish what was found
-            out.choice, out.score = polish(float(r7), out.choice, s, lists)
-        if out.choice is not None:
-            return {**found, "r7": float(r7), "network": out.choice, "outcome": out}
-        if not out.proven:
-            found["unproven"] += (float(r7),)
-    return found
+    y1, y2 = split.interval(threshold, r7)
+    open_ = np.flatnonzero(y1 <= y2)
+    order = open_[np.argsort(-(y2[open_] / y1[open_]), kind="stable")]  # the widest intervals first
+    evaluated = 0
+    for batch in _batches(order, len(split.r11)):
+        if evaluated > MAX_EVALUATIONS:
+            return {"network": None, "score": -np.inf, "proven": False, "evaluated": evaluated}
+        for part in split.candidates(batch, threshold, r7, CHUNK):  # stop at the first that reaches the threshold
+            if evaluated > MAX_EVALUATIONS:
+                return {"network": None, "score": -np.inf, "proven": False, "evaluated": evaluated}
+            evaluated += len(part)
+            sc = scores(r7, part, split.s)
+            j = int(np.argmax(sc))
+            if sc[j] >= threshold - 1e-12:
+                return {"network": tuple(float(x) for x in part[j]), "score": float(sc[j]), "proven": True,
+                        "evaluated": evaluated}
+    return {"network": None, "score": -np.inf, "proven": True, "evaluated": evaluated}
+
+
+def best_network(split: Split, r7: float, threshold: float, start: tuple) -> dict:
+    """The network of the largest worst margin with this R7, within :data:`GAP`; ``start`` is a network known to
+    reach ``threshold``. Levels theta from the best bound down: every network
+    that could exceed theta (its level shift's interval for theta) is evaluated; once the best found is within
+    GAP of theta, no network left out can beat it by more. The first level is GAP / 8 under the bound, each next
+    one twice as far.
+
+    Parameters
+    ----------
+    split : Split
+        The spec's level shifts and references.
+    r7 : float
+        The sense resistor, nominal, ohm.
+    threshold : float
+        The worst margin asked for (``min_margin``), a fraction.
+    start : tuple of float
+        A network known to reach ``threshold``, R9..R13 in ohm.
+
+    Returns
+    -------
+    dict
+        "network" (R9..R13, ohm), "score" (its worst margin), "bound" (no network with this R7 has a worst
+        margin above it), "proven" (False: the evaluation limit stopped the search first), "evaluated".
+    """
+    ub = split.bounds(r7)
+    best, score = start, float(scores(r7, np.array([start]), split.s)[0])
+    top = float(ub.max())
+    evaluated, step = 0, GAP / 8  # the first level close under the best bound: the best network is often there
+    theta = top - step
+    while True:
+        theta = max(theta, threshold, score)
+        order = np.flatnonzero(ub > theta)
+        order = order[np.argsort(-ub[order], kind="stable")]
+        for batch in _batches(order, len(split.r11)):
+            if evaluated > MAX_EVALUATIONS:
+                return {"network": best, "score": score, "bound": top, "proven": False, "evaluated": evaluated}
+            for nets in split.candidates(batch, theta, r7, 10 * CHUNK):
+                if evaluated > MAX_EVALUATIONS:
+                    return {"network": best, "score": score, "bound": top, "proven": False, "evaluated": evaluated}
+                evaluated += len(nets)
+                sc = scores(r7, nets, split.s)
+                j = int(np.argmax(sc))
+                if sc[j] > score:
+                    best, score = tuple(float(x) for x in nets[j]), float(sc[j])
+        # every network above theta has been evaluated: the best is the best, or within GAP of theta
+        if score >= theta - GAP or theta <= max(threshold, score):
+            return {"network": best, "score": score, "bound": max(score, min(theta, top)) if score < theta else score,
+                    "proven": True, "evaluated": evaluated}
+        step *= 2
+        theta -= step
+
+
+def solve(s: dict) -> dict:
+    """The smallest series R7 with a network meeting the spec, and its network of the largest worst margin.
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+
+    Returns
+    -------
+    dict
+        "r7" (ohm, or None when no network of the series meets the spec), "network" (R9..R13, ohm), "score"
+        (its worst margin), "bound" (no network with this R7 has a worst margin above it), "proven" (bool: the
+        tie-break settled within GAP), "unproven" (smaller R7 values, ohm, whose search hit its evaluation limit
+        without a network), "tried" (R7 values searched), "evaluated" (exact network evaluations).
+    """
+    split = Split(s)
+    out = {"r7": None, "network": None, "score": -np.inf, "bound": -np.inf, "proven": True, "unproven": (),
+           "tried": 0, "evaluated": 0}
+    if not len(split.r12) or not len(split.sums):
+        return out
+    for r7 in choices(s, "r7"):
+        r7 = float(r7)
+        y1, y2 = split.interval(s["min_margin"], r7)
+        if not (y1 <= y2).any():  # no level shift leaves any room: proven without a network evaluated
+            continue
+        out["tried"] += 1
+        found = first_network(split, r7, s["min_margin"])
+        out["evaluated"] += found["evaluated"]
+        if found["network"] is None:
+            if not found["proven"]:
+                out["unproven"] += (r7,)
+            continue
+        best = best_network(split, r7, s["min_margin"], found["network"])
+        out["evaluated"] += best["evaluated"]
+        return {**out, "r7": r7, "network": best["network"], "score": best["score"], "bound": best["bound"],
+                "proven": best["proven"]}
+    return out
 
 
 def enumerate_series(spec: dict):
