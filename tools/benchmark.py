@@ -2,10 +2,12 @@
 
 Usage: python tools/benchmark.py
 Measures: one `python -m handbook design` run from the shell (wall time, median of 5); each design against
-its exhaustive enumeration; and the limiter network's branch and bound (casadi) against exhaustive
-enumeration (tests/oracles.py: every network, every corner from the node equations) on 200 generated
-specifications with reduced series, plus the full-E96 default with the enumeration's time extrapolated
-from a measured sample. Not a test (timings depend on the machine); the book shows the committed results.
+its exhaustive enumeration; the limiter network's exact search against exhaustive enumeration
+(tests/oracles.py: every network, every corner from the node equations) on 200 generated specifications with
+reduced series; the search on 520 wide generated specifications (E24..E192, every figure varied: time of
+every answer, each design held at every corner of the oracle, the proof flags counted); and the full-E96
+default with the enumeration's time extrapolated from a measured sample. Not a test (timings depend on the
+machine); the book shows the committed results.
 """
 import json
 import math
@@ -22,6 +24,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
 
+from handbook.core import InputError  # noqa: E402
 from handbook.design import class_d, commutation, limiter  # noqa: E402
 from handbook.design.solvers import Infeasible  # noqa: E402
 
@@ -59,10 +62,32 @@ def reduced_spec(rng) -> dict:
     return spec
 
 
-def limiter_network(cases: int = 200) -> dict:
+def wide_spec(rng) -> dict:
+    """A wide specification, as an audit would draw it: every tolerance, zener, op-amp figure and limit varied,
+    each divider resistor on E24..E192 over half a decade to three decades, a third of them with one pin."""
+    i_no = float(10 ** rng.uniform(-1.3, 1))
+    sp = dict(i_no_trip=i_no, i_must_trip=i_no * float(rng.uniform(1.3, 4)), min_margin=float(rng.choice([0.0, 0.02, 0.05])),
+              resistor_tolerance=float(rng.choice([0.001, 0.005, 0.01, 0.02])),
+              r7_tolerance=float(rng.choice([0.01, 0.02, 0.05])), zener_voltage=float(rng.uniform(3.3, 30)),
+              zener_tolerance=float(rng.choice([0.02, 0.05])), zener_tc=float(rng.uniform(0, 0.02)),
+              temp_span=float(rng.uniform(20, 80)), offset=float(rng.uniform(0, 0.01)),
+              input_bias=float(10 ** rng.uniform(-8, -5.3)), input_offset_current=float(10 ** rng.uniform(-9, -5.3)),
+              divider_current_max=float(10 ** rng.uniform(-3.3, -1.5)), input_headroom=float(rng.uniform(0.5, 2.5)),
+              r7_series=str(rng.choice(["E24", "E96"])))
+    for n in ("r9", "r10", "r11", "r12", "r13"):
+        low = float(10 ** rng.uniform(1, 4))
+        sp.update({f"{n}_series": str(rng.choice(["E24", "E48", "E96", "E192"])), f"{n}_min": low,
+                   f"{n}_max": low * float(10 ** rng.uniform(0.5, 3))})
+    if rng.uniform() < 0.3:
+        sp[str(rng.choice(["r9", "r10", "r11", "r12", "r13"]))] = float(np.round(10 ** rng.uniform(2, 5), -1))
+    return sp
+
+
+def limiter_reduced(cases: int = 200) -> dict:
+    """The search against exhaustive enumeration (tests/oracles.py) on reduced series."""
     rng = np.random.default_rng(2026)
     same = same_net = feasible = feasible_same = 0
-    t_bb, t_enum = [], []
+    t_search, t_enum = [], []
     for _ in range(cases):
         spec = reduced_spec(rng)
         t = time.perf_counter()
@@ -73,7 +98,7 @@ def limiter_network(cases: int = 200) -> dict:
             got = limiter.design(spec)
         except Infeasible:
             got = None
-        t_bb.append(time.perf_counter() - t)
+        t_search.append(time.perf_counter() - t)
         if got is None or expected is None:
             same += got is None and expected is None
             same_net += got is None and expected is None
@@ -84,7 +109,49 @@ def limiter_network(cases: int = 200) -> dict:
         same += ok
         feasible_same += ok
         same_net += got.r7 == expected[0] and got.network == expected[1]
-    # the full E96 default: the branch and bound timed; the enumeration timed on a sample and extrapolated
+    return {"cases": cases, "feasible": feasible, "same_optimum": int(same), "feasible_same_optimum": int(feasible_same),
+            "same_network": int(same_net), "search_s": statistics.mean(t_search), "enumeration_s": statistics.mean(t_enum)}
+
+
+def limiter_wide(cases: int = 520) -> dict:
+    """Every answer to wide specs timed (a design, or the Infeasible with what can be met), each design held
+    at every corner of the oracle, and the proof flags counted."""
+    rng = np.random.default_rng(18)
+    times, designs, infeasible, unproven, sound, invalid = [], 0, 0, 0, 0, 0
+    for _ in range(cases):
+        spec = wide_spec(rng)
+        try:
+            limiter.checked(spec)
+        except InputError:
+            invalid += 1
+            continue
+        t = time.perf_counter()
+        try:
+            r = limiter.design(spec)
+        except Infeasible:
+            times.append(time.perf_counter() - t)
+            infeasible += 1
+            continue
+        times.append(time.perf_counter() - t)
+        designs += 1
+        unproven += not (r.r7_proven and r.best_proven)
+        lo, hi, head, i_div = limiter_corners(r.r7, r.network, r.spec)
+        s = r.spec
+        sound += bool(lo >= s["i_no_trip"] * (1 + s["min_margin"]) * (1 - 1e-9)
+                      and hi <= s["i_must_trip"] * (1 - s["min_margin"]) * (1 + 1e-9)
+                      and head >= s["input_headroom"] - 1e-9 and i_div <= s["divider_current_max"] * (1 + 1e-9))
+    q = np.percentile(times, [50, 90, 99])
+    return {"cases": len(times), "invalid_skipped": invalid, "designs": designs, "infeasible": infeasible,
+            "unproven": int(unproven), "sound_at_every_corner": int(sound), "median_s": float(q[0]),
+            "p90_s": float(q[1]), "p99_s": float(q[2]), "max_s": float(max(times)),
+            "over_2_s": int(sum(t > 2 for t in times)), "over_10_s": int(sum(t > 10 for t in times))}
+
+
+def limiter_network() -> dict:
+    """The reduced-series comparison, the wide specs, and the full E96 default (the enumeration's time
+    extrapolated from a measured sample)."""
+    out = {**limiter_reduced(), "wide": limiter_wide()}
+    rng = np.random.default_rng(7)
     s = limiter.checked({})
     lists = [limiter.model.choices(s, n) for n in limiter.model.RESISTORS]
     networks = math.prod(len(v) for v in lists[1:])
@@ -92,10 +159,7 @@ def limiter_network(cases: int = 200) -> dict:
     t = time.perf_counter()
     limiter_corners(1.0, sample, s)
     per_network = (time.perf_counter() - t) / 20_000
-    return {"cases": cases, "feasible": feasible, "same_optimum": int(same), "feasible_same_optimum": int(feasible_same),
-            "same_network": int(same_net),
-            "casadi_s": statistics.mean(t_bb), "enumeration_s": statistics.mean(t_enum),
-            "full_casadi_s": timed(lambda: limiter.design({}), 3), "full_networks": float(networks),
+    return {**out, "full_search_s": timed(lambda: limiter.design({}), 3), "full_networks": float(networks),
             "full_enumeration_s_extrapolated": per_network * networks}
 
 
