@@ -75,17 +75,19 @@ def enumerate_cap_ti(spec):
 
 def limiter_corners(r7, network, s):
     """Every corner of the op-amp limiter (R7, R9..R13 at either end, the zener at either end, the offset at
-    either sign, and the two bias currents at every vertex of their polygon: both the same way, within
-    I_os of each other), written from the node equations: V_+ = Z + (V_D1 - V_cs) R13/(R12 + R13)
-    + I_p R12||R13 and V_- = Z + V_D1 R11/(R9 + R10 + R11) + I_m (R9 + R10)||R11 meet at V_+ - V_- = V_os.
+    either sign, and the two bias currents at every vertex of their parallelogram: their average within
+    +-I_b, their difference within +-I_os, as op-amp datasheets define the two), written from the node
+    equations: V_+ = Z + (V_D1 - V_cs) R13/(R12 + R13) + I_p R12||R13 and V_- = Z + V_D1 R11/(R9 + R10 + R11)
+    + I_m (R9 + R10)||R11 meet at V_+ - V_- = V_os.
     ``network`` = (R9, R10, R11, R12, R13), each a float or an array (networks side by side).
     Returns (lowest trip current, highest trip current, least headroom of the two inputs, most current
     both dividers draw from the zener node), all exact."""
     t, ib = s["resistor_tolerance"], s["input_bias"]
-    ios = min(s["input_offset_current"], 2 * ib)
+    ios = s["input_offset_current"]
     vz0, dz = s["zener_voltage"], s["zener_voltage"] * s["zener_tolerance"] + s["zener_tc"] * s["temp_span"]
-    biases = [(sg * ib, sg * ib) for sg in (-1, 1)] + [(sg * ib, sg * (ib - ios)) for sg in (-1, 1)] + [
-        (sg * (ib - ios), sg * ib) for sg in (-1, 1)]
+    # the datasheet's definitions: the inputs' average within +-I_b, their difference within +-I_os (the
+    # parallelogram's four vertices)
+    biases = [(avg + d / 2, avg - d / 2) for avg in (-ib, ib) for d in (-ios, ios)]
     net = [np.asarray(x, dtype=float) for x in network]
     v_lo = np.full(np.broadcast(*net).shape, np.inf)
     v_hi, head, i_div = -v_lo, v_lo.copy(), -v_lo

@@ -63,7 +63,7 @@ def test_the_corner_shows_the_input_range_failure(ngspice):
 
 
 def test_a_design_is_confirmed_at_every_candidate_corner(ngspice):
-    """SPICE runs all 1536 corners and keeps its own extremes: the design's corner choice is not used, so a
+    """SPICE runs all 1024 corners and keeps its own extremes: the design's corner choice is not used, so a
     wrong sign or a missed corner in the design's search would show as a difference here."""
     from handbook.design import limiter
     from handbook.spice import checks
@@ -73,7 +73,7 @@ def test_a_design_is_confirmed_at_every_candidate_corner(ngspice):
     assert lo["i_eq"] == pytest.approx(r.i_trip_min, rel=1e-9) and hi["i_eq"] == pytest.approx(r.i_trip_max, rel=1e-9)
     assert head["head_eq"] == pytest.approx(r.headroom_min, rel=1e-9)
     out = limiter_design.design_check(r)
-    assert out["corners"] == len(limiter_design.design_candidates(r)) == 1536
+    assert out["corners"] == len(limiter_design.design_candidates(r)) == 1024
     assert out["i_trip_min_equation"] == r.i_trip_min and out["i_trip_max_equation"] == r.i_trip_max
     rows = checks.confirm_rows("current_limiter", r, out)
     assert all(row["agrees"] and row["verdict"] == "agrees" and row["rel_diff"] <= row["rtol"] for row in rows)

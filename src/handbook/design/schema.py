@@ -60,10 +60,11 @@ def _limiter() -> tuple[Param, ...]:
         Param(name="offset", default=9e-3, unit="V", low=0.0, high=0.1, meaning="largest op-amp input offset",
               cite="LM358 datasheet, over temperature"),
         Param(name="input_bias", default=500e-9, unit="A", low=0.0, high=1e-5,
-              meaning="largest op-amp input bias current (both inputs the same direction, either sign)",
-              cite="LM358 datasheet (TI SLOS068): 250 nA max at 25 C, 500 nA over temperature"),
+              meaning="largest op-amp input bias current: the two inputs' average (both the same direction, either sign)",
+              cite="LM358 datasheet (TI SLOS068): 250 nA max at 25 C, 500 nA over temperature; the average of the "
+                   "two inputs' currents, as op-amp datasheets define it"),
         Param(name="input_offset_current", default=150e-9, unit="A", low=0.0, high=1e-5,
-              meaning="largest difference of the two inputs' bias currents",
+              meaning="largest difference of the two inputs' bias currents (one input may carry input_bias + half of it)",
               cite="LM358 datasheet (TI SLOS068): 50 nA max at 25 C, 150 nA over temperature"),
         Param(name="divider_current_max", default=1e-3, unit="A", high=1.0, **_POS,
               meaning="largest current both dividers together draw from the zener node (D1's feed must supply "

@@ -67,7 +67,7 @@ CONFIRM = {
          "sanity")),
     "current_limiter": (
         ("lowest trip current over every corner", "A", "i_trip_min", 0.005,
-         "1536 copies of the network (every resistor, zener, offset and bias corner) solved by ngspice in DC, the "
+         "1024 copies of the network (every resistor, zener, offset and bias corner) solved by ngspice in DC, the "
          "lowest kept; the design's node equation takes V_Z at 5 mA and R7 carrying the motor current only, SPICE "
          "the zener's 15 ohm at the current it carries at each corner and R12's current in R7 (up to 0.35 % seen): "
          "±0.5 %", "independent"),
@@ -75,7 +75,7 @@ CONFIRM = {
          "as the lowest: the zener's dynamic resistance at its real current and R12's current in R7 (0.35 % seen "
          "at the default spec): ±0.5 %", "independent"),
         ("least input headroom at no motor current over every corner", "V", "headroom_min", 0.002,
-         "eq 11 with the bias against the same 1536 copies at no motor current; the zener's 15 ohm at its real "
+         "eq 11 with the bias against the same 1024 copies at no motor current; the zener's 15 ohm at its real "
          "current moves V_Z by a few mV (0.03 % seen): ±0.2 %", "independent")),
     "class_d": (
         ("output filter corner with the load", "Hz", "f_corner", 0.001,

@@ -26,7 +26,8 @@ def test_corners_equal_the_oracles_2_to_the_10_corners():
     rng = np.random.default_rng(3)
     network = tuple(10 ** rng.uniform(2, 5, 500) for _ in range(5))  # any divider, V_cs of either sign
     for extra in ({"offset": 0.1, "input_bias": 2e-6, "input_offset_current": 0.5e-6},
-                  {"input_bias": 1e-6, "input_offset_current": 5e-6, "zener_tc": 0.0}):  # I_os above 2 I_b: a box
+                  {"input_bias": 1e-6, "input_offset_current": 5e-6, "zener_tc": 0.0}):  # I_os above 2 I_b: currents of
+        # either sign at once
         s = {**defaults("current_limiter"), **extra}
         v = net.verify(0.47, network, s)
         lo, hi, head, i_div = limiter_corners(0.47, network, s)
@@ -39,7 +40,8 @@ def test_corners_equal_the_oracles_2_to_the_10_corners():
 def test_the_issues_counter_example_is_fixed():
     # the old closed form claimed 1.7993 A for R7 = 5.1 ohm; every corner (no bias, no drift, no margin) gives
     # 1.8002 A; R7 = 5.6 ohm is the smallest E24 value that holds
-    spec = dict(r10=160e3, r11=130.0, r12=110e3, r13=2200.0, input_bias=0.0, zener_tc=0.0, min_margin=0.0,
+    spec = dict(r10=160e3, r11=130.0, r12=110e3, r13=2200.0, input_bias=0.0, input_offset_current=0.0, zener_tc=0.0,
+                min_margin=0.0,
                 zener_tolerance=0.05)
     s = {**defaults("current_limiter"), **spec}
     _, hi, _, _ = limiter_corners(5.1, (10.0, 160e3, 130.0, 110e3, 2200.0), s)

@@ -104,3 +104,25 @@ def test_a_pin_whose_own_range_holds_no_series_value_is_not_freed():
     with pytest.raises(Infeasible) as exc:
         limiter.design(spec)
     assert "pinned" not in exc.value.achievable and exc.value.achievable
+
+
+def test_a_search_stopped_by_its_limit_says_so(monkeypatch):
+    """The evaluation limit is what stands between the search and a proof: with none left, no R7 is settled,
+    and the answer says the spec is not proven unmeetable instead of claiming it; a tie-break stopped early is
+    reported (best_proven False) and warned about."""
+    from handbook.design.limiter import search
+
+    monkeypatch.setattr(search, "MAX_EVALUATIONS", -1)
+    with pytest.raises(Infeasible) as exc:
+        limiter.design({})
+    assert "not proven" in str(exc.value) and exc.value.achievable["unproven"]
+    s = limiter.checked({})
+    split = search.Split(s)
+    monkeypatch.setattr(search, "MAX_EVALUATIONS", 10**9)
+    r = limiter.design({})
+    assert r.r7_proven and r.best_proven and not r.warnings[1:]  # the default: proven, one warning (R7's loss)
+    monkeypatch.setattr(search, "MAX_EVALUATIONS", -1)
+    stopped = search.best_network(split, r.r7, s["min_margin"], r.network)
+    assert not stopped["proven"] and stopped["bound"] >= stopped["score"]
+    warned = limiter.warnings({**r.summary(), "best_proven": False, "margin_bound": stopped["bound"]}, s)
+    assert any("not proven the best" in w for w in warned)

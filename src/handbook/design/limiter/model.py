@@ -11,18 +11,20 @@ and the op-amp trips at V_+ - V_- = V_os, so with 1/A = 1 + R12/R13 and B = R11 
 
     V_cs = V_D1 (1 - B/A) + I_+ R12 - (I_- R_m + V_os) / A,    R_m = (R9 + R10) || R11
 
-The bias currents of an op-amp's two inputs flow the same way (out of the LM358's PNP inputs) and differ
-by at most the input offset current I_os: I_+, I_- in [-I_b, I_b] with |I_+ - I_-| <= I_os (either sign,
-so other input stages are covered too). The extremes of a I_+ - b I_- (a = R12, b = R_m/A, both positive)
-over that polygon lie at its vertices: +-(|a - b| I_b + min(a, b) I_os) when I_os <= 2 I_b. Treating the
-two currents as independent instead (+-(a + b) I_b) would charge a design for an error that cancels when
-the two inputs see equal resistances, and push every divider to its smallest resistance.
+The bias currents of an op-amp's two inputs flow the same way (out of the LM358's PNP inputs). As op-amp
+datasheets define them, the input bias current is the average of the two inputs' currents and the input
+offset current their difference: (I_+ + I_-)/2 in [-I_b, I_b] and |I_+ - I_-| <= I_os (either sign, so other
+input stages are covered too), so either input alone may carry up to I_b + I_os/2. The extremes of
+a I_+ - b I_- (a = R12, b = R_m/A, both positive) over that parallelogram lie at its vertices:
++-(|a - b| I_b + (a + b) I_os / 2). Treating the two currents as independent instead (+-(a + b) I_b) would
+charge a design for an error that cancels when the two inputs see equal resistances, and push every divider
+to its smallest resistance.
 
 Why the corners are exact (:func:`corner_proof` checks it with sympy): V_cs, both headrooms and the trip
 current V_cs / R7 are, in each quantity separately, a ratio of two polynomials of degree at most one whose
 denominator is a sum of positive resistances. Such a function is monotone in that quantity over any
 interval, so its extremes over the whole tolerance box lie at a vertex of the box, and enumerating every
-vertex finds them (for the two bias currents, the vertices of their polygon). Here V_D1 takes both ends;
+vertex finds them (for the two bias currents, the vertices of their parallelogram). Here V_D1 takes both ends;
 V_os and the bias currents enter linearly, so their worst values are written directly (above); the five
 resistors take all their combinations. No direction of any resistor is assumed: the earlier closed form fixed the high corner at
 (R12-, R13+), which is wrong once V_D1 B + V_os < 0 and let an unsafe design through.
@@ -32,7 +34,6 @@ from __future__ import annotations
 import itertools
 from collections.abc import Mapping
 
-import casadi as ca
 import numpy as np
 
 from ...core import InputError, series
@@ -81,8 +82,8 @@ def trip_voltage_corners(r, s: dict, relaxed: bool = False) -> tuple[list, list]
     ``relaxed`` (the smooth form the solver gets, the same feasible set): only the lowest zener voltage in
     ``lows`` and the highest in ``highs`` (the others matter only where 1 - B/A <= 0, where V_cs is negative
     at that corner, which the lower trip limit refuses anyway), and the bias error's |a - b| I_b +
-    min(a, b) I_os written as the larger of its two smooth branches, a I_b - b (I_b - I_os) and
-    b I_b - a (I_b - I_os), each its own entry (a bound on a maximum is a bound on each branch).
+    (a + b) I_os / 2 written as the larger of its two smooth branches, a (I_b + I_os/2) - b (I_b - I_os/2) and
+    b (I_b + I_os/2) - a (I_b - I_os/2), each its own entry (a bound on a maximum is a bound on each branch).
 
     Parameters
     ----------
@@ -104,7 +105,7 @@ def trip_voltage_corners(r, s: dict, relaxed: bool = False) -> tuple[list, list]
     """
     vz_lo, vz_hi = zener_range(s)
     ib, off, t = s["input_bias"], s["offset"], s["resistor_tolerance"]
-    ios = s["input_offset_current"] if isinstance(ib, ca.SX) else min(s["input_offset_current"], 2 * ib)
+    ios = s["input_offset_current"]
     lows, highs = [], []
     for signs in CORNERS:
         s910, r11, r12, r13 = _corner(r, signs, t)
@@ -114,7 +115,7 @@ def trip_voltage_corners(r, s: dict, relaxed: bool = False) -> tuple[list, list]
         k = 1 - b * inv_a
         a_p, a_m = r12, r_m * inv_a
         if relaxed:
-            for err in (a_p * ib - a_m * (ib - ios), a_m * ib - a_p * (ib - ios)):
+            for err in (a_p * (ib + ios / 2) - a_m * (ib - ios / 2), a_m * (ib + ios / 2) - a_p * (ib - ios / 2)):
                 lows.append(vz_lo * k - off * inv_a - err)
                 highs.append(vz_hi * k + off * inv_a + err)
             continue
@@ -126,7 +127,8 @@ def trip_voltage_corners(r, s: dict, relaxed: bool = False) -> tuple[list, list]
 
 
 def bias_error(a, b, ib: float, ios: float):
-    """The largest |a I_+ - b I_-| over the bias currents' polygon (a, b > 0): |a - b| I_b + min(a, b) I_os.
+    """The largest |a I_+ - b I_-| over the bias currents' parallelogram (a, b > 0; average within +-I_b, difference
+    within +-I_os): |a - b| I_b + (a + b) I_os / 2.
     Floats, numpy arrays or casadi symbols (abs is casadi's fabs).
 
     Parameters
@@ -136,17 +138,16 @@ def bias_error(a, b, ib: float, ios: float):
     b : float or numpy.ndarray or casadi.SX
         The factor of I_- in the trip voltage, ohm (R_m / A = ((R9 + R10) || R11) (1 + R12 / R13)), positive.
     ib : float
-        The largest input bias current I_b, A.
+        The largest input bias current I_b (the two inputs' average), A.
     ios : float
-        The largest input offset current I_os, A; the formula holds for I_os <= 2 I_b (callers clip it).
+        The largest input offset current I_os (their difference), A.
 
     Returns
     -------
     float or numpy.ndarray or casadi.SX
         The largest |a I_+ - b I_-|, V, broadcast over ``a`` and ``b``.
     """
-    d = abs(a - b)
-    return d * ib + (a + b - d) / 2 * ios
+    return abs(a - b) * ib + (a + b) / 2 * ios
 
 
 def divider_current(r, s: dict):
@@ -175,15 +176,16 @@ def divider_current(r, s: dict):
 def headroom_corners(r, s: dict) -> list:
     """How far each op-amp input sits below the supply, at every corner (V_cs = 0 for V_+, where it is
     nearest the supply; V_- does not depend on V_cs): 4 corners of (R12, R13), 4 of (R9 + R10, R11), the
-    lowest zener voltage and the bias current pushing each input up.
+    lowest zener voltage and the bias current pushing each input up (one input's current is at most
+    I_b + I_os / 2: the average within I_b, the difference within I_os).
 
     Parameters
     ----------
     r : tuple
         (R9, R10, R11, R12, R13), ohm: floats, numpy arrays (broadcast together) or casadi symbols.
     s : Mapping
-        The checked ``[current_limiter]`` table (SI units); the zener's keys, ``input_bias`` (A) and
-        ``resistor_tolerance`` (fraction) are read.
+        The checked ``[current_limiter]`` table (SI units); the zener's keys, ``input_bias`` and
+        ``input_offset_current`` (A) and ``resistor_tolerance`` (fraction) are read.
 
     Returns
     -------
@@ -193,7 +195,7 @@ def headroom_corners(r, s: dict) -> list:
         in the same order. The least headroom is their minimum.
     """
     vz_lo, _ = zener_range(s)
-    ib, t = s["input_bias"], s["resistor_tolerance"]
+    ib, t = s["input_bias"] + s["input_offset_current"] / 2, s["resistor_tolerance"]  # one input's most
     r9, r10, r11, r12, r13 = r
     out = []
     for g12, g13 in itertools.product((-1, 1), repeat=2):

@@ -44,8 +44,7 @@ class Relaxation:
     with a node's bounds. Weight w = 1: minimise ln R7 (t >= min_margin); w = 0: maximise t."""
 
     def __init__(self, s: dict):
-        # the offset current counts up to twice the bias current (beyond that the two currents are free)
-        values = {**s, "input_offset_current": min(s["input_offset_current"], 2 * s["input_bias"])}
+        values = dict(s)
         self.q = [float(values[k]) for k in RELAX_KEYS] + [max(s["input_headroom"], 1.0)]
         self.solver, self.warm = _solvers()
 

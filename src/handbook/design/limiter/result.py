@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from ...core.units import eng
 from ...sources.an94002 import circuit as an94002
 from ..common import Result, reported
+from ..solvers import Infeasible
 from . import model as net
 from .explain import explain
 from .model import TABLE, checked
@@ -88,7 +89,12 @@ def design(spec: dict | None = None) -> LimiterResult:
     found = solve(s)
     r7, network = found["r7"], found["network"]
     if r7 is None:
-        raise explain(s)
+        why = explain(s)
+        if found["unproven"]:  # the search stopped before settling these: "nothing meets it" is not proven
+            raise Infeasible(TABLE, f"{why} (not proven: the search for R7 = "
+                             f"{', '.join(eng(v, 'Ω', 3) for v in found['unproven'])} stopped at its evaluation limit)",
+                             {**why.achievable, "unproven": found["unproven"]})
+        raise why
     v = net.verify(r7, network, s)
     m_lo, m_hi = float(v["margin_low"]), float(v["margin_high"])
     r9, r10, r11, r12, r13 = network
@@ -134,7 +140,7 @@ def warnings(r: dict, s: dict) -> list[str]:
                    f"{', '.join(eng(v, 'Ω', 3) for v in r['unproven'])} stopped at its evaluation limit without a network, "
                    "so a network with a smaller R7 may exist")
     worst = min(r["margin_low"], r["margin_high"])
-    if r["margin_bound"] - worst > GAP + 1e-12:
+    if not r.get("best_proven", True) or r["margin_bound"] - worst > GAP + 1e-12:
         out.append(f"the worst margin {worst:.2%} is not proven the best for this R7: the search stopped at its "
                    f"evaluation limit with networks of up to {r['margin_bound']:.2%} not ruled out")
     return out

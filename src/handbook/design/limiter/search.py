@@ -5,7 +5,7 @@ The network splits in two: the level shift P = (R12, R13) and the reference Q = 
 corner, with A = R13 / (R12 + R13), B = R11 / (R9 + R10 + R11) and the bias error E (:func:`.model.bias_error`
 times A), the trip voltage is (:mod:`.model`)
 
-    V_cs = V_D1 (1 - B / A) -+ (V_os + E) / A,      E = |R_p - R_m| I_b + min(R_p, R_m) I_os >= R_p min(I_b, I_os)
+    V_cs = V_D1 (1 - B / A) -+ (V_os + E) / A,      E = |R_p - R_m| I_b + (R_p + R_m) I_os / 2 >= R_p min(I_os, I_b + I_os / 2)
 
 (R_p = R12 || R13, R_m = (R9 + R10) || R11). Q enters the bias-free part only through B, whose extremes over
 Q's tolerances are 1 / (1 + y (1 -+ t) / (1 +- t)), y = (R9 + R10) / R11: so for one P, "both margins at least
@@ -42,19 +42,18 @@ class Split:
 
     def __init__(self, s: dict):
         self.s = s
-        t, ib = s["resistor_tolerance"], s["input_bias"]
-        ios = min(s["input_offset_current"], 2 * ib)
+        t, ib, ios = s["resistor_tolerance"], s["input_bias"], s["input_offset_current"]
         self.vz = np.array(zener_range(s))
         r = {n: choices(s, n) for n in DIVIDER}
         r12, r13 = (x.ravel() for x in np.meshgrid(r["r12"], r["r13"], indexing="ij"))
         a12 = r12[:, None] * (1 + t * np.array([-1, -1, 1, 1]))
         a13 = r13[:, None] * (1 + t * np.array([-1, 1, -1, 1]))
-        head_p = ((self.vz[0] * a12 - ib * a12 * a13) / (a12 + a13)).min(axis=1)
+        head_p = ((self.vz[0] * a12 - (ib + ios / 2) * a12 * a13) / (a12 + a13)).min(axis=1)  # one input's most
         i_p = self.vz[1] / ((r12 + r13) * (1 - t))
         keep = (head_p >= s["input_headroom"] - 1e-12) & (i_p < s["divider_current_max"] * (1 + 1e-12))
         self.r12, self.r13, self.i_p = r12[keep], r13[keep], i_p[keep]
         self.a = (a13 / (a12 + a13))[keep]  # (nP, 4): A at each corner of (R12, R13)
-        self.eps = (a12 * a13 / (a12 + a13))[keep] * min(ios, ib)  # the least bias error there
+        self.eps = (a12 * a13 / (a12 + a13))[keep] * min(ios, ib + ios / 2)  # the least bias error there
         sums = (r["r9"][:, None] + r["r10"][None, :]).ravel()
         order = np.argsort(sums, kind="stable")
         self.sums = sums[order]
@@ -62,7 +61,7 @@ class Split:
         self.r9, self.r10, self.r11 = r["r9"], r["r10"], r["r11"]
         self.rho = (1 - t) / (1 + t)
         self.y_lo, self.y_hi = self.sums[0] / self.r11[-1], self.sums[-1] / self.r11[0]
-        self.head_sum = self._head_sums(t, ib)
+        self.head_sum = self._head_sums(t, ib + ios / 2)
 
     def _head_sums(self, t: float, ib: float) -> np.ndarray:
         """For each R11, the least R9 + R10 whose V_- headroom, (S (V_D1,lo - I_b R11)) / (S + R11) at every

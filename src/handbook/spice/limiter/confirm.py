@@ -24,14 +24,14 @@ SWEEP_POINTS, SWEEP_TOP = 50, 2.0
 def design_candidates(result) -> list[dict]:
     """Every candidate corner of a current-limiter design as :func:`opamp` parameters, chosen by no equation:
     each of R7, R9..R13 at either end of its tolerance (64), the zener at either end of its tolerance and drift,
-    the offset at either sign, and the two bias currents at each of the six vertices of their polygon (both at
-    +-I_B, or one of them I_os smaller, from the spec's input_offset_current): 1536 corners."""
+    the offset at either sign, and the two bias currents at each of the four vertices of their parallelogram
+    (their average at +-I_B, their difference at +-I_os, from the spec's input_offset_current): 1024 corners."""
     from ...design.limiter import model as net
 
     s = result.spec
     t, ib, off = s["resistor_tolerance"], s["input_bias"], s["offset"]
-    ios = min(s["input_offset_current"], 2 * ib)
-    biases = [(g * a, g * b) for g in (-1, 1) for a, b in ((ib, ib), (ib, ib - ios), (ib - ios, ib))]
+    ios = s["input_offset_current"]  # the inputs' average within +-I_b, their difference within +-I_os
+    biases = [(avg + d / 2, avg - d / 2) for avg in (-ib, ib) for d in (-ios, ios)]
     base = opamp_defaults()
     out = []
     for signs in itertools.product((-1, 1), repeat=6):
@@ -59,15 +59,15 @@ def design_corners(result) -> tuple[dict, dict, dict]:
 
 
 #: vectors per wrdata command of the design deck (a command line of a few kB); copies per deck: ngspice's
-#: set-up time grows faster than the copies (96 copies take 0.35 s, 768 copies 14 s), so the 1536 corners run
-#: as 48 decks of 32, two ngspice processes at a time (about 2 s on two cores)
+#: set-up time grows faster than the copies (96 copies take 0.35 s, 768 copies 14 s), so the 1024 corners run
+#: as 32 decks of 32, two ngspice processes at a time (about 1.5 s on two cores)
 WRDATA_CHUNK, DECK_COPIES = 200, 32
 
 
 def design_deck(corners: list[dict], i_top: float, folder) -> tuple[str, list[str]]:
     """One DC deck holding one copy of the limiter per corner, the motor currents swept together from 0 to
     ``i_top`` (a G source per copy driven by the shared sweep node ``sw``), and the files its `wrdata`
-    commands write (1536 `.meas` lines would take ngspice minutes; the sweep itself takes a fraction of a
+    commands write (1024 `.meas` lines would take ngspice minutes; the sweep itself takes a fraction of a
     second). Per copy ``_k`` it writes the LM358's input difference v(pd_k) = V+ - V-, the two headrooms
     v(php_k), v(phm_k) and the output v(out_k) at every point of the sweep."""
     models_, body, zeners = models.lm358(), ["VSW sw 0 0"], {}
@@ -101,7 +101,7 @@ def _first_crossing(x, y, level) -> float:
 
 def design_check(result) -> dict:
     """A current-limiter design (handbook.design.limiter) simulated at every candidate corner
-    (:func:`design_candidates`, 1536 copies in 48 DC runs of 32; the design's own corner choice is not used) and
+    (:func:`design_candidates`, 1024 copies in 32 DC runs of 32; the design's own corner choice is not used) and
     SPICE's own extremes kept: "i_trip_min", "i_trip_max" (A), "headroom_min" (V, the least of V_s - V+ and
     V_s - V- at no motor current), each beside the design's own figure ("*_equation"); "ok": at every corner
     the op-amp's output is high at no motor current and low at the top of the sweep (an input within the
