@@ -133,6 +133,8 @@ def shown_value(v, unit: str) -> str:
     not designed (None), the warnings joined ('none' when there are none)."""
     if v is None:
         return "—"
+    if isinstance(v, bool):  # a proof's flag
+        return "yes" if v else "no"
     if isinstance(v, (tuple, list)):  # warnings (text), or values in the unit (the R7 values left unsettled)
         return "; ".join(shown_value(x, unit) if isinstance(x, float) else str(x) for x in v) if v else "none"
     if unit == "%":
