@@ -30,7 +30,7 @@ ENUMERATE_MAX = 2_000_000
 #: the tie-break is settled to within this worst margin (0.25 percentage point)
 GAP = 2.5e-3
 #: exact network evaluations one R7 may spend before its search is reported unsettled
-MAX_EVALUATIONS = 20_000_000
+MAX_EVALUATIONS = 5_000_000
 #: networks evaluated at a time while looking for the first that meets the spec
 CHUNK = 20_000
 #: relative widening of every closed-form interval (rounding may not cost a network)
@@ -82,7 +82,7 @@ class Split:
         """For each R11, the least R9 + R10 whose V_- headroom, (S (V_D1,lo - I_b R11)) / (S + R11) at every
         corner, reaches input_headroom (increasing in S where V_D1,lo - I_b R11 > input_headroom); +inf where
         none can, -inf where the form gives no bound."""
-        h, out = self.s["input_headroom"], np.full(len(self.r11), -np.inf)
+        h, out = self.s["input_headroom"] - 1e-12, np.full(len(self.r11), -np.inf)  # verify's tolerance
         for g11 in (-1, 1):
             a11 = self.r11 * (1 + t * g11)
             c = self.vz[0] - ib * a11
@@ -113,19 +113,21 @@ class Split:
             (y1, y2), one each per level shift, clipped to the y its references can reach (:meth:`_reach`).
         """
         s = self.s
+        theta = np.asarray(theta) - 1e-12  # the margin a design accepts (verify's tolerance)
         big_l = (1 + theta) * s["i_no_trip"] * r7 * (1 + s["r7_tolerance"])
         big_u = (1 - theta) * s["i_must_trip"] * (r7 if r7_high is None else r7_high) * (1 - s["r7_tolerance"])
         a, eps = self.a[p], self.eps[p]
         big_l, big_u = np.asarray(big_l), np.asarray(big_u)
         if big_l.ndim:  # one theta per level shift
             big_l, big_u = big_l[:, None], big_u[:, None]
-        vz = self.vz[:, None, None]
-        beta_low = (((vz - big_l) * a - s["offset"] - eps) / vz).min(axis=(0, 2))
-        beta_high = (((vz - big_u) * a + s["offset"] + eps) / vz).max(axis=(0, 2))
+        vz = self.vz[:, None, None]  # positive wherever a level shift passed the headroom (Split.__init__)
         with np.errstate(divide="ignore", invalid="ignore"):
+            beta_low = (((vz - big_l) * a - s["offset"] - eps) / vz).min(axis=(0, 2))
+            beta_high = (((vz - big_u) * a + s["offset"] + eps) / vz).max(axis=(0, 2))
             y1 = np.where(beta_low > 0, (1 / beta_low - 1) / self.rho, np.inf)
             y2 = np.where(beta_high > 0, (1 / beta_high - 1) * self.rho, np.inf)
-        return np.maximum(y1 * (1 - SLACK), self.y_lo[p]), np.minimum(y2 * (1 + SLACK), self.y_hi[p])
+        # both ends widened by SLACK after clipping: y_hi R11 may round below the sum it came from
+        return np.maximum(y1, self.y_lo[p]) * (1 - SLACK), np.minimum(y2, self.y_hi[p]) * (1 + SLACK)
 
     def bounds(self, r7: float) -> np.ndarray:
         """For every P, a bound on the worst margin any network with it can reach (bisection on the interval).
@@ -179,7 +181,8 @@ class Split:
         least_total = self.vz[1] / ((1 - t) * room)  # S + R11 at least this for the divider current
         lo = np.maximum(np.maximum(y1[:, None] * self.r11, self.head_sum), least_total[:, None] - self.r11) * (1 - SLACK)
         start = np.searchsorted(self.sums, lo.ravel(), side="left")
-        count = np.maximum(np.searchsorted(self.sums, (y2[:, None] * self.r11).ravel(), side="right") - start, 0)
+        hi = (y2[:, None] * self.r11).ravel() * (1 + SLACK)
+        count = np.maximum(np.searchsorted(self.sums, hi, side="right") - start, 0)
         ends = np.cumsum(count)
         for first in range(0, int(ends[-1]), size):
             rows = np.arange(first, min(first + size, int(ends[-1])))
