@@ -6,7 +6,7 @@ says what can be met. Nothing else may escape.
 
 Two tiers, for the run time: 1,000 specifications of every key (junk values, typos and unknown tables
 among them) through the loader, the contradiction checks and the commutation design (closed forms, a few
-ms); then 20 junk-free ones through all three designs (the limiter's branch and bound takes up to about
+ms); then 20 junk-free ones through all three designs (the limiter's exact search takes up to about
 a second), each table on its own so that an unmeetable table does not hide the others.
 """
 import math
