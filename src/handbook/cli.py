@@ -43,8 +43,9 @@ def _usage_error(args, message: str) -> int:
 
 
 def _equation_status(r: dict) -> str:
-    """'empirical' for a fitted equation (no symbolic check behind it), else 'agrees' or 'differs'."""
-    return "empirical" if r.get("empirical") else "agrees" if r["agrees"] else "differs"
+    """'empirical' for a fitted equation (no symbolic check behind it), else 'agrees' (a printed constant rounded
+    counts: :attr:`~handbook.core.equation.Equation.rounded_constants`) or 'differs'."""
+    return "empirical" if r.get("empirical") else "agrees" if r["agrees"] or r.get("rounded_constants") else "differs"
 
 
 def _equation_check(r: dict) -> str:
@@ -52,7 +53,7 @@ def _equation_check(r: dict) -> str:
     against the datasheet's own figures."""
     if r.get("empirical"):
         return "empirical: reproduces figures" if r["agrees"] else "empirical: MISSES figures"
-    return "agrees" if r["agrees"] else "DIFFERS"
+    return "agrees" if r["agrees"] else "agrees (constant rounded)" if r.get("rounded_constants") else "DIFFERS"
 
 
 def cmd_examples(args) -> int:
@@ -82,8 +83,8 @@ def cmd_equations(args) -> int:
     except _BadStatus as exc:
         return _usage_error(args, str(exc))
     if args.json:
-        keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "dimensions_ok", "law", "note",
-                "empirical", "fitted_to")
+        keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "rounded_constants", "dimensions_ok",
+                "law", "note", "empirical", "fitted_to")
         print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
         return 0
     table = [[r["id"], r["source"], _equation_check(r), "ok" if r["dimensions_ok"] else "ERROR",

@@ -165,3 +165,30 @@ def test_an_empirical_equation_is_checked_against_figures_not_a_derivation():
                  units={}, empirical=True)
     with pytest.raises(ValueError, match="derived form is required"):
         Equation(id="z", source="z", title="z", lhs=sp.Symbol("f"), lhs_unit=u.hertz, printed=rn, units={})
+
+
+@pytest.mark.parametrize("text, exact, rounds", [("160", 1100 / 7, True), ("2.63", 50 / 19, True), ("0.741", 20 / 27, True),
+                                                 ("0.070", 0.0705, True), ("7092", 1e6 / 141, True),
+                                                 ("0.0148", 0.01455, False), ("7.7", 7.79, False), ("2.63", 2.64, False)])
+def test_a_printed_constant_rounds_its_exact_value_by_its_own_figures(text, exact, rounds):
+    from handbook.core.equation import rounds_to
+
+    assert rounds_to(text, exact) is rounds
+
+
+def test_rounded_constants_agree_once_the_exact_values_are_put_back():
+    """The six printed forms that differ from their derivations only by a rounded constant read 'agrees
+    (constant rounded)'; a constant that rounds right but is not the one the printed form lost does not."""
+    from dataclasses import replace
+
+    import sympy as sp
+
+    from handbook.sources import SOURCES
+
+    eqs = {e.id: e for src in SOURCES for e in src.equations()}
+    ids = ("an94002-eq6", "an94002-eq9b", "an94002-eq11-num", "an93008-eq2", "tda5341-capcdm", "tda5341-max-delay")
+    assert all(not eqs[i].check().agrees and eqs[i].rounded_constants for i in ids)
+    assert all(eqs[i].summary()["rounded_constants"] for i in ids)
+    wrong = replace(eqs["an94002-eq9b"], rounded=(("2.63", sp.Rational(26301, 10000)),))  # rounds to 2.63, not 5/1.9
+    assert not wrong.rounded_constants
+    assert not any(e.rounded_constants for e in eqs.values() if e.id not in ids)

@@ -27,8 +27,8 @@ The check is computed once per record (the record is frozen) and, through
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass, field
-from decimal import Decimal
+from dataclasses import dataclass, field, replace
+from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Decimal
 
 import sympy as sp
 from sympy.physics import units as u
@@ -152,6 +152,31 @@ class Check:
     points: tuple = ()  # empirical equations: one (where, at, printed text, value in its unit, deviation, ok) each
 
 
+def rounds_to(text: str, exact: float) -> bool:
+    """``exact`` rounded to the significant figures of the printed ``text`` (half up or half even) is ``text``.
+
+    Parameters
+    ----------
+    text : str
+        The number as printed ("160", "0.070", "2.63"): an integer's trailing zeros are not significant, a
+        decimal's are.
+    exact : float
+        The value it stands for.
+
+    Returns
+    -------
+    bool
+        True when either rounding rule gives the printed number.
+    """
+    digits = text.lstrip("+-")
+    figures = len(digits.replace(".", "").lstrip("0")) if "." in digits else len(digits.rstrip("0")) or 1
+    value = Decimal(repr(exact))
+    if value == 0:
+        return Decimal(text) == 0
+    step = Decimal(1).scaleb(value.adjusted() - figures + 1)
+    return any(value.quantize(step, rounding=mode) == Decimal(text) for mode in (ROUND_HALF_UP, ROUND_HALF_EVEN))
+
+
 @dataclass(frozen=True)
 class TablePoint:
     """A figure the source itself prints, which an empirical equation's printed form must reproduce."""
@@ -182,7 +207,7 @@ class Equation:
     reconstructed: str = ""  # what the OCR garbled and how the form was rebuilt
     ocr_form: sp.Expr | None = None  # the OCR text taken literally, where it differs
     printed_tex: str = ""  # the printed right side as LaTeX, where sympy would re-arrange it
-    rounded_constants: bool = False  # printed with rounded numbers substituted: differs by rounding only
+    rounded: tuple = ()  # (printed constant as text, its exact value): the source rounded these, nothing else
     empirical: bool = False  # fitted to figures, not derivable: the source does not show the circuit
     fitted_to: str = ""  # what the printed constants reproduce (empirical equations)
     table: tuple = ()  # TablePoint: the source's own figures the printed form is checked against
@@ -354,6 +379,20 @@ class Equation:
             rows.append(rf"{at} & \text{{printed form: }} {value:.4g}{u_tex} & \text{{datasheet: }} {number}{u_tex}"
                         rf" & {mark}")
         return r"\begin{array}{llll}" + r" \\ ".join(rows) + r"\end{array}" if rows else r"\text{(no figure to check)}"
+
+    @functools.cached_property
+    def rounded_constants(self) -> bool:
+        """The printed form differs from the derived one by rounded constants only: each printed constant of
+        ``rounded`` is its exact value rounded to the figures printed (half up or half even), and with the exact
+        values put back the printed form agrees with the derivation."""
+        if not self.rounded or self.empirical or self.check().agrees:
+            return False
+        if not all(rounds_to(text, float(exact)) for text, exact in self.rounded):
+            return False
+        swap = {}
+        for text, exact in self.rounded:
+            swap.update({sp.Rational(text): sp.sympify(exact), -sp.Rational(text): -sp.sympify(exact)})
+        return replace(self, printed=self.printed.xreplace(swap), rounded=()).check().agrees
 
     def summary(self) -> dict:
         """The equation's summary for the chapters, the errata and the command line (JSON-ready).

@@ -39,7 +39,7 @@ def show_equation(eq) -> None:
     display(Markdown(f"derived ({eq.law}):"))
     display(Math(s["derived_latex"]))
     dims = "dimensions consistent" if s["dimensions_ok"] else "**dimension error**"
-    verdict = "agrees" if s["agrees"] else "**differs**"
+    verdict = "agrees" if s["agrees"] else "agrees (constant rounded)" if s["rounded_constants"] else "**differs**"
     display(Markdown(f"*Check:* {verdict}; {dims}. {s['note']}"))
 
 

@@ -50,7 +50,7 @@ def eq2() -> Equation:
         id="an93008-eq2", source=f"{NAME} 2.2, eq (2)", title="Eq 1 with R8 = 7.5 k, R9 = 33 k", lhs=Vp, lhs_unit=V,
         printed=sp.Rational("0.815") * (Vs - Vcs), derived=_v_plus(), units=UNITS,
         values={R8: 7500 * OHM, R9: 33000 * OHM}, printed_tex=r"0.815 \, V_{supply} - 0.815 \, V_{cs}",
-        law="eq 1 evaluated", note="0.815 is 33/40.5 = 0.81481 rounded.")
+        law="eq 1 evaluated", note="0.815 is 33/40.5 = 0.81481 rounded.", rounded=(("0.815", sp.Rational(66, 81)),))
 
 
 def eq4() -> Equation:

@@ -231,6 +231,7 @@ def eq6() -> Equation:
         units={I_max: A, V_win: V, N_min: 1 / S},
         values={I_max: 22 * uA, V_win: sp.Rational("1.4") * V},
         law="charge balance with the largest charge current and the smallest window at RPM_min",
+        rounded=(("160", sp.Rational(10 * 22, 14) * 10),),
         note=("The exact constant is 10 x 22 uA / 1.4 V = 157.14 uF rpm; 160 rounds it up by 1.8 % "
               "(conservative). The note's 22 uA is the TDA5144's largest discharge current; the charge "
               "current is at most 11 uA (datasheet), which halves the bound."),
@@ -296,7 +297,7 @@ def eq9() -> Equation:
         scales={t_wd: t_wd / S}, lhs_scale=F,
         derived=timer_law(C_TI, I_wd, t_wd, V_hi - V_lo), units={I_wd: A, t_wd: S, V_hi: V, V_lo: V},
         values=dict(TI_VALUES),
-        law="charge balance at 5 uA from 0.3 V to 2.2 V",
+        law="charge balance at 5 uA from 0.3 V to 2.2 V", rounded=(("2.63", sp.Rational(50, 19)),),
     )
 
 
@@ -314,7 +315,7 @@ def eq9b() -> Equation:
         scales={t_wd: t_wd / S},
         derived=timer_law(C_TI, I_wd, t_wd, V_hi - V_lo), units={I_wd: A, t_wd: S, V_hi: V, V_lo: V},
         values=dict(TI_VALUES),
-        law="charge balance at 5 uA from 0.3 V to 2.2 V",
+        law="charge balance at 5 uA from 0.3 V to 2.2 V", rounded=(("2.63", sp.Rational(50, 19)),),
         note="2.63 is 5/1.9 = 2.6316 rounded; units hidden: C in uF for t_wd in s (or nF for ms).",
     )
 
@@ -376,7 +377,8 @@ def eq11_num() -> Equation:
         printed_tex=r"V_s - 2.02 - 0.741 \, V_{cs}",
         units={V_s: V, V_cs: V, V_D1: V, R12: OHM, R13: OHM},
         values={V_D1: sp.Rational("7.79") * V, R12: sp.Rational(5600) * OHM, R13: sp.Rational(16000) * OHM},
-        law="eq 11 evaluated", rounded_constants=True,
+        law="eq 11 evaluated",
+        rounded=(("2.02", sp.Rational(779, 100) * sp.Rational(5600, 21600)), ("0.741", sp.Rational(16000, 21600))),
         note="2.02 and 0.741 are 2.0196 V and 0.74074 rounded.",
     )
 

@@ -28,7 +28,7 @@ def capcdm() -> Equation:
         law="charge balance: charged at 10 uA for one commutation period 1/f_C1 across 0.87..2.28 V",
         reconstructed="the OCR shows 'C = 10 ... 1.41 x f ... 7092' in pieces; the form C = 10 uA / (1.41 V "
                       "f_C1) = 7092 / f_C1 nF fits the pieces and the example 7092/1600 = 4.43",
-        note="7092 is 7092.2 rounded.")
+        note="7092 is 7092.2 rounded.", rounded=(("7092", sp.Rational(10**6, 141)),))
 
 
 def max_delay() -> Equation:
@@ -46,7 +46,8 @@ def max_delay() -> Equation:
         scales={c_nf: C / nF}, derived=sp.solve(sp.Eq(Idis * t, C * dV), t)[0],
         units={C: u.farad, Idis: u.ampere, dV: u.volt},
         values={Idis: 20 * u.ampere / 10 ** 6, dV: sp.Rational("1.41") * u.volt},
-        law="charge balance: discharged at 20 uA across the window", note="0.070 is 0.0705 rounded.")
+        law="charge balance: discharged at 20 uA across the window", note="0.070 is 0.0705 rounded.",
+        rounded=(("0.070", sp.Rational(141, 2000)),))
 
 
 def build() -> list[Equation]:
