@@ -254,3 +254,15 @@ def test_recorder_remembers_what_is_read():
 def test_recorder_spread_reads_every_key():
     r = Recorder({"a": 1, "b": 2})
     assert {**r} == {"a": 1, "b": 2} and r.read == {"a", "b"}
+
+
+@pytest.mark.parametrize("computed, safe_side, status", [
+    (0.01455, "above", "conservative"),  # the note's CAP-CD bound: 0.0148 from the constant 160, 0.01455 exact
+    (0.01455, "", "rounding"),  # no safe side declared: the rounded intermediate explains it, nothing more
+    (0.01505, "above", "rounding"),  # the print below the exact value is not the safe side of a lower bound
+    (0.01479, "above", "rounding"),  # the exact value itself rounds to the print: plain rounding
+])
+def test_a_rounded_intermediate_that_moves_a_bound_to_the_safe_side_is_conservative(computed, safe_side, status):
+    c = claim("0.0148", "uF", compute=lambda p: computed * 1e-6, via_rounded=lambda p: 160e-6 / 10800,
+              safe_side=safe_side)
+    assert c.evaluate(NOTE, NOTE)["status"] == status

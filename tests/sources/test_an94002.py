@@ -121,7 +121,8 @@ STATUS = {
               "an94002-offset-generic", "an94002-vd1-min", "an94002-zener-tol", "an94002-r3",
               "an94002-r13", "an94002-c5"},
     "bound met": {"an94002-c2", "an94002-c6"},  # C2 >= 39.8 nF (10 uF chosen), C6 >= 2000 pF
-    "rounding": {"an94002-fosc", "an94002-capst", "an94002-eq6-constant", "an94002-capcd-bound",
+    "conservative": {"an94002-capcd-bound"},  # a lower bound printed 1.7 % high, through the constant 160
+    "rounding": {"an94002-fosc", "an94002-capst", "an94002-eq6-constant",
                  "an94002-eq9-constant", "an94002-factor-a", "an94002-a-vd1", "an94002-level-shift",
                  "an94002-vcs-at-opamp", "an94002-offset-tol", "an94002-zener-drift", "an94002-zener-drift-pct",
                  "an94002-total-tol"},

@@ -165,7 +165,8 @@ class Claim:
     def _status(self, computed: float, via: float | None) -> str:
         """classify, then what a number's arithmetic alone cannot tell: a wrong method, a last digit cut off
         instead of rounded ("rounding", when the print is exactly the truncated value), and a value rounded
-        to the safe side on purpose ("conservative")."""
+        to the safe side on purpose ("conservative": within one unit of its last digit, or the print of a rounded
+        intermediate that moved it to the safe side, where the exact value does not round to it)."""
         status = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation, basis=self.basis,
                           via_rounded=via)
         if self.method_wrong:
@@ -175,6 +176,11 @@ class Claim:
             return "rounding"
         if status in ("misprint", "inconsistent") and self.safe_side and _safe_rounding(self, computed):
             return "conservative"
+        if status == "rounding" and via is not None and self.safe_side:
+            direct = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation, basis=self.basis)
+            on_safe_side = (computed > self.printed.si) if self.safe_side == "below" else (self.printed.si > computed)
+            if direct in ("misprint", "inconsistent") and on_safe_side:
+                return "conservative"
         return status
 
     def evaluate(self, params: Mapping, defaults: Mapping) -> dict:

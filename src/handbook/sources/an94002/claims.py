@@ -213,9 +213,10 @@ def commutation() -> list[Claim]:
               reason="10 x 22 uA / 1.4 V = 157.1 uF rpm, rounded up to two figures (conservative by 1.8 %)"),
         Claim(id="an94002-capcd-bound", where=f"{NAME} 2.1.2", quantity="CAP-CD lower bound for 1800 rpm, 6 pole pairs",
               printed=Printed("0.0148", "uF"), chapter=ch, compute=capcd_bound,
-              via_rounded=lambda p: 160e-6 / (p["rpm_min"] * p["pole_pairs"]),
-              reason="160 / (1800 x 6) = 0.01481 uF follows from the rounded constant; from 22 uA and 1.4 V "
-                     "directly the bound is 0.01455 uF"),
+              via_rounded=lambda p: 160e-6 / (p["rpm_min"] * p["pole_pairs"]), safe_side="above",
+              reason="a lower bound printed on the safe side: 160 / (1800 x 6) = 0.01481 uF follows from the note's "
+                     "constant, 157.14 rounded up to 160; from 22 uA and 1.4 V directly the bound is 0.01455 uF, "
+                     "which 0.0148 is 1.7 % above (a larger capacitor than needed, never a smaller one)"),
         Claim(id="an94002-c3", where=f"{NAME} 2.1.2", quantity="C3 = CAP-CD chosen", printed=Printed("18", "nF"),
               chapter=ch, compute=cap_cd_choice,
               reason="smallest E12 value that meets 14.55 nF at -5 %: 15 nF x 0.95 = 14.25 nF falls short, "
