@@ -266,3 +266,23 @@ def test_a_rounded_intermediate_that_moves_a_bound_to_the_safe_side_is_conservat
     c = claim("0.0148", "uF", compute=lambda p: computed * 1e-6, via_rounded=lambda p: 160e-6 / 10800,
               safe_side=safe_side)
     assert c.evaluate(NOTE, NOTE)["status"] == status
+
+
+def test_every_claim_called_truncated_is_its_value_cut_off():
+    """A reason that says 'truncated' must be true of the numbers: the print is the recomputed value (or the
+    note's rounded intermediate) with its digits past the last printed one cut off, and rounding would not give
+    the print (else the claim is plain rounding)."""
+    from handbook.core.claim import _is_truncation
+    from handbook.sources import SOURCES
+
+    checked = 0
+    for src in SOURCES:
+        for c in src.claims():
+            if not c.truncated:
+                continue
+            p = src.defaults
+            computed = float(c.compute(p))
+            via = None if c.via_rounded is None else float(c.via_rounded(p))
+            assert _is_truncation(c.printed, computed) or (via is not None and _is_truncation(c.printed, via)), c.id
+            checked += 1
+    assert checked >= 3  # an93008-vz-min and both zener drifts at least
