@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from ...core import InputError
-from .model import DIVIDER, RESISTORS, checked, choices, scores, zener_range
+from .model import DIVIDER, RESISTORS, checked, choices, headroom_corners, scores, zener_range
 
 #: the most divider networks :func:`enumerate_series` evaluates (a few hundred MB of numpy arrays)
 ENUMERATE_MAX = 2_000_000
@@ -48,7 +48,7 @@ class Split:
         r12, r13 = (x.ravel() for x in np.meshgrid(r["r12"], r["r13"], indexing="ij"))
         a12 = r12[:, None] * (1 + t * np.array([-1, -1, 1, 1]))
         a13 = r13[:, None] * (1 + t * np.array([-1, 1, -1, 1]))
-        head_p = ((self.vz[0] * a12 - (ib + ios / 2) * a12 * a13) / (a12 + a13)).min(axis=1)  # one input's most
+        head_p = np.min(headroom_corners((1.0, 1.0, 1.0, r12, r13), s)[:4], axis=0)  # V_+'s four corners
         i_p = self.vz[1] / ((r12 + r13) * (1 - t))
         keep = (head_p >= s["input_headroom"] - 1e-12) & (i_p < s["divider_current_max"] * (1 + 1e-12))
         self.r12, self.r13, self.i_p = r12[keep], r13[keep], i_p[keep]
@@ -192,10 +192,31 @@ class Split:
             yield np.column_stack([self.r9[self.i9[k]], self.r10[self.i10[k]], self.r11[j11], self.r12[p], self.r13[p]])
 
 
-def _batches(order: np.ndarray, n11: int):
-    """``order`` cut into batches of about 200 000 (level shift, R11) cells."""
-    size = max(1, 200_000 // max(n11, 1))
-    return (order[i:i + size] for i in range(0, len(order), size))
+class _Limit(Exception):
+    """The search spent :data:`MAX_EVALUATIONS` exact evaluations on one R7 before it settled."""
+
+
+class _Budget:
+    """The exact evaluations one R7's search has spent, across its calls of :func:`_scored`."""
+
+    def __init__(self):
+        self.spent = 0
+
+
+def _scored(split: Split, order: np.ndarray, theta: float, r7: float, size: int, budget: _Budget):
+    """Every candidate network of the level shifts ``order`` for ``theta`` (:meth:`Split.candidates`), in
+    batches of about 200 000 (level shift, R11) cells and arrays of ``size`` networks, each array with its
+    exact worst margins (:func:`.model.scores`); raises :class:`_Limit` once ``budget`` has passed
+    :data:`MAX_EVALUATIONS`."""
+    step = max(1, 200_000 // max(len(split.r11), 1))
+    for i in range(0, len(order), step):
+        if budget.spent > MAX_EVALUATIONS:
+            raise _Limit
+        for nets in split.candidates(order[i:i + step], theta, r7, size):
+            if budget.spent > MAX_EVALUATIONS:
+                raise _Limit
+            budget.spent += len(nets)
+            yield nets, scores(r7, nets, split.s)
 
 
 def first_network(split: Split, r7: float, threshold: float) -> dict:
@@ -219,20 +240,16 @@ def first_network(split: Split, r7: float, threshold: float) -> dict:
     y1, y2 = split.interval(threshold, r7)
     open_ = np.flatnonzero(y1 <= y2)
     order = open_[np.argsort(-(y2[open_] / y1[open_]), kind="stable")]  # the widest intervals first
-    evaluated = 0
-    for batch in _batches(order, len(split.r11)):
-        if evaluated > MAX_EVALUATIONS:
-            return {"network": None, "score": -np.inf, "proven": False, "evaluated": evaluated}
-        for part in split.candidates(batch, threshold, r7, CHUNK):  # stop at the first that reaches the threshold
-            if evaluated > MAX_EVALUATIONS:
-                return {"network": None, "score": -np.inf, "proven": False, "evaluated": evaluated}
-            evaluated += len(part)
-            sc = scores(r7, part, split.s)
+    budget = _Budget()
+    try:
+        for part, sc in _scored(split, order, threshold, r7, CHUNK, budget):  # stop at the first that reaches it
             j = int(np.argmax(sc))
             if sc[j] >= threshold - 1e-12:
                 return {"network": tuple(float(x) for x in part[j]), "score": float(sc[j]), "proven": True,
-                        "evaluated": evaluated}
-    return {"network": None, "score": -np.inf, "proven": True, "evaluated": evaluated}
+                        "evaluated": budget.spent}
+    except _Limit:
+        return {"network": None, "score": -np.inf, "proven": False, "evaluated": budget.spent}
+    return {"network": None, "score": -np.inf, "proven": True, "evaluated": budget.spent}
 
 
 def best_network(split: Split, r7: float, threshold: float, start: tuple) -> dict:
@@ -262,27 +279,23 @@ def best_network(split: Split, r7: float, threshold: float, start: tuple) -> dic
     ub = split.bounds(r7)
     best, score = start, float(scores(r7, np.array([start]), split.s)[0])
     top = float(ub.max())
-    evaluated, step = 0, GAP / 8  # the first level close under the best bound: the best network is often there
+    budget, step = _Budget(), GAP / 8  # the first level close under the best bound: the best network is often there
     theta = top - step
     while True:
         theta = max(theta, threshold, score)
         order = np.flatnonzero(ub > theta)
         order = order[np.argsort(-ub[order], kind="stable")]
-        for batch in _batches(order, len(split.r11)):
-            if evaluated > MAX_EVALUATIONS:
-                return {"network": best, "score": score, "bound": top, "proven": False, "evaluated": evaluated}
-            for nets in split.candidates(batch, theta, r7, 10 * CHUNK):
-                if evaluated > MAX_EVALUATIONS:
-                    return {"network": best, "score": score, "bound": top, "proven": False, "evaluated": evaluated}
-                evaluated += len(nets)
-                sc = scores(r7, nets, split.s)
+        try:
+            for nets, sc in _scored(split, order, theta, r7, 10 * CHUNK, budget):
                 j = int(np.argmax(sc))
                 if sc[j] > score:
                     best, score = tuple(float(x) for x in nets[j]), float(sc[j])
+        except _Limit:
+            return {"network": best, "score": score, "bound": top, "proven": False, "evaluated": budget.spent}
         # every network above theta has been evaluated: the best is the best, or within GAP of theta
         if score >= theta - GAP or theta <= max(threshold, score):
-            return {"network": best, "score": score, "bound": max(score, min(theta, top)) if score < theta else score,
-                    "proven": True, "evaluated": evaluated}
+            return {"network": best, "score": score, "bound": score if score >= theta else min(theta, top),
+                    "proven": True, "evaluated": budget.spent}
         step *= 2
         theta -= step
 
