@@ -51,7 +51,9 @@ class Split:
         head_p = np.min(headroom_corners((1.0, 1.0, 1.0, r12, r13), s)[:4], axis=0)  # V_+'s four corners
         i_p = self.vz[1] / ((r12 + r13) * (1 - t))
         keep = (head_p >= s["input_headroom"] - 1e-12) & (i_p < s["divider_current_max"] * (1 + 1e-12))
-        self.r12, self.r13, self.i_p = r12[keep], r13[keep], i_p[keep]
+        self.r12, self.r13 = r12[keep], r13[keep]
+        # the least S + R11 the references may have, per level shift: the divider current it leaves them
+        self.least_total = self.vz[1] / ((1 - t) * (s["divider_current_max"] * (1 + 1e-12) - i_p[keep]))
         self.a = (a13 / (a12 + a13))[keep]  # (nP, 4): A at each corner of (R12, R13)
         self.eps = (a12 * a13 / (a12 + a13))[keep] * min(ios, ib + ios / 2)  # the least bias error there
         sums = (r["r9"][:, None] + r["r10"][None, :]).ravel()
@@ -61,15 +63,14 @@ class Split:
         self.r9, self.r10, self.r11 = r["r9"], r["r10"], r["r11"]
         self.rho = (1 - t) / (1 + t)
         self.head_sum = self._head_sums(t, ib + ios / 2)
-        self.y_lo, self.y_hi = self._reach(t)
+        self.y_lo, self.y_hi = self._reach()
 
-    def _reach(self, t: float) -> tuple[np.ndarray, np.ndarray]:
+    def _reach(self) -> tuple[np.ndarray, np.ndarray]:
         """For each level shift, the y = (R9 + R10) / R11 its references can reach at all: every R11 whose sums
         meet the headroom and the divider current the level shift leaves them. The least total S + R11 rises
         with the level shift's own current; it is taken at 512 breakpoints, each level shift at the breakpoint
         just below its own (less demanding: the range only widens)."""
-        room = self.s["divider_current_max"] * (1 + 1e-12) - self.i_p
-        least = self.vz[1] / ((1 - t) * room)  # S + R11 at least this, per level shift
+        least = self.least_total
         points = np.sort(least)[np.linspace(0, len(least) - 1, min(512, len(least))).astype(int)]
         lower = np.maximum(np.maximum(self.head_sum, points[:, None] - self.r11), self.sums[0]) * (1 - SLACK)
         ok = lower <= self.sums[-1]
@@ -176,10 +177,8 @@ class Split:
         ps, y1, y2 = ps[y1 <= y2], y1[y1 <= y2], y2[y1 <= y2]
         if not len(ps):
             return
-        t, s = self.s["resistor_tolerance"], self.s
-        room = s["divider_current_max"] * (1 + 1e-12) - self.i_p[ps]
-        least_total = self.vz[1] / ((1 - t) * room)  # S + R11 at least this for the divider current
-        lo = np.maximum(np.maximum(y1[:, None] * self.r11, self.head_sum), least_total[:, None] - self.r11) * (1 - SLACK)
+        least_total = self.least_total[ps][:, None]  # S + R11 at least this for the divider current
+        lo = np.maximum(np.maximum(y1[:, None] * self.r11, self.head_sum), least_total - self.r11) * (1 - SLACK)
         start = np.searchsorted(self.sums, lo.ravel(), side="left")
         hi = (y2[:, None] * self.r11).ravel() * (1 + SLACK)
         count = np.maximum(np.searchsorted(self.sums, hi, side="right") - start, 0)
