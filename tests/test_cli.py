@@ -76,9 +76,19 @@ def test_errata_command():
     rows = json.loads(run("errata", "--json"))
     assert len(rows) > 10
     for r in rows:
-        assert {"id", "source", "kind", "what", "printed", "computed", "evidence", "consequence"} <= set(r)
+        assert {"id", "source", "kind", "what", "printed", "computed", "evidence", "consequence", "quote", "confidence",
+                "charitable", "places"} <= set(r)
     assert {r["source"].split()[0] for r in rows} >= {"AN94002", "AN93008"}
     assert "AN94002" in run("errata", "--source", "AN94002")
+    # the case against the source: the disputed passage word for word, how sure, the other places of one fact
+    f15 = {r["id"]: r for r in rows}["lm4651-f-15k"]
+    assert f15["confidence"] == "certain" and ["LM4651/LM4652", "Switching Frequency Range $R_{OSC} = 15k\\Omega$ 65 kHz"] \
+        in f15["quote"]
+    assert any("pin 16" in p for p in f15["places"]) and "lm4651-f-pin-0" not in {r["id"] for r in rows}
+    notes = json.loads(run("errata", "--reading-notes", "--json"))
+    assert {"an94002-eq2", "lm4651-t-standby", "tca5600-t-values"} <= {n["id"] for n in notes}
+    assert not {n["id"] for n in notes} & {r["id"] for r in rows}
+    assert "lm4651-t-standby" in run("errata", "--reading-notes", "--source", "LM4651")
 
 
 def _run_any(cols, *args):

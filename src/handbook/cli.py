@@ -96,19 +96,29 @@ def cmd_equations(args) -> int:
 def cmd_errata(args) -> int:
     from .report.tables import ERRATA_KINDS
 
+    if args.reading_notes:
+        notes = [r for r in catalog.reading_notes() if not args.source or args.source.lower() in
+                 (r["source"] + " " + r["id"]).lower()]
+        if args.json:
+            print(json.dumps(notes, indent=1))
+        else:
+            print(fit_table([[r["id"], r["source"], f"{r['what']}: {r['note_text']}"] for r in notes],
+                            ["id", "source", "reading note"], [22, 22]))
+        return 0
     try:
         rows = _filtered([{**r, "status": r["kind"]} for r in catalog.errata()], args, lambda r: r["kind"],
                          ERRATA_KINDS)
     except _BadStatus as exc:
         return _usage_error(args, str(exc))
-    keys = ("id", "source", "kind", "what", "printed", "computed", "evidence", "consequence")
+    keys = ("id", "source", "kind", "confidence", "what", "printed", "computed", "evidence", "consequence", "quote",
+            "charitable", "places")
     out = [{**{k: r.get(k) for k in keys}, "computed": r.get("recomputed"), "unit": r.get("unit")} for r in rows]
     if args.json:
         print(json.dumps(out, indent=1, default=str))
         return 0
-    table = [[r["id"], r["source"], r["kind"], r["what"] + (f": {r['consequence']}" if r["consequence"] else "")]
-             for r in rows]
-    print(fit_table(table, ["id", "source", "kind", "what, and what it costs"], [24, 20, 14]))
+    table = [[r["id"], r["source"], f"{r['kind']}, {r['confidence']}",
+              r["what"] + (f": {r['consequence']}" if r["consequence"] else "")] for r in rows]
+    print(fit_table(table, ["id", "source", "kind, confidence", "what, and what it costs"], [24, 20, 16]))
     return 0
 
 
@@ -280,7 +290,10 @@ def main(argv=None) -> int:
     _filters(p, "agrees, differs (derived equations), empirical (fitted to a datasheet's figures)")
     p.set_defaults(func=cmd_equations)
     p = sub.add_parser("errata", help="every erratum: what the source says, what holds, the evidence")
-    _filters(p, "the kind: misprint, inconsistent, 'wrong method', equation, reconstructed, text")
+    _filters(p, "the kind: misprint, inconsistent, 'wrong method', equation, text")
+    p.add_argument("--reading-notes", action="store_true",
+                   help="list the reading notes instead: what is not an error of the source (lost OCR, reconstructions, "
+                   "missing public data, the book's assumptions)")
     p.set_defaults(func=cmd_errata)
     p = sub.add_parser("design", help="choose the timing capacitors, the limiter network, the class-D parts and "
                        "the TCA5600 converter's coil",

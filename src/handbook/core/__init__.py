@@ -7,8 +7,9 @@
 * :class:`handbook.core.equation.Equation` (imported from its module: it needs sympy): a printed
   equation, its derivation and their symbolic check.
 """
-from .claim import UNIT_SCALES, Claim, Printed, TextErratum, classify
+from .claim import CONFIDENCE, UNIT_SCALES, Case, Claim, Printed, ReadingNote, TextErratum, classify
 from .source import Fact, Param, Source
 from .validate import InputError
 
-__all__ = ["UNIT_SCALES", "Claim", "Fact", "InputError", "Param", "Printed", "Source", "TextErratum", "classify"]
+__all__ = ["CONFIDENCE", "UNIT_SCALES", "Case", "Claim",
+           "Fact", "InputError", "Param", "Printed", "ReadingNote", "Source", "TextErratum", "classify"]

@@ -153,6 +153,7 @@ class Claim:
     safe_side: str = ""  # "below" or "above": the side a designer may round to on purpose (a heat sink's K/W)
     method_wrong: bool = False  # the number follows the note's arithmetic but the method itself is wrong
     truncated: bool = False  # the last printed digit is cut off, not rounded (22.755 printed 22.7): a rounding matter
+    same_fact: str = ""  # the id of the erratum that carries this fact (listed there as another place, not counted twice)
 
     def __post_init__(self):
         if self.truncated and "truncated" not in self.reason:
@@ -235,6 +236,52 @@ def _safe_rounding(claim: Claim, computed: float) -> bool:
     return 0 < gap <= 2 * claim.printed.half_unit * (1 + 1e-9)
 
 
+#: how sure an erratum is: the printed numbers settle it; it rests on a reading (which datasheet, which column);
+#: or the OCR may have lost what would clear the source
+CONFIDENCE = ("certain", "probable", "depends on the OCR")
+
+
+@dataclass(frozen=True)
+class Case:
+    """The case an erratum makes against its source: the passage it disputes, word for word, and how sure it is.
+
+    ``quote`` holds verbatim passages, the disputed one first; a passage of another document is a
+    ``(document, text)`` pair ("AN94002", "datasheet facts"). ``charitable`` is the most charitable reading
+    of the source (a rounded column, a definition elsewhere, an explicit alternative, an OCR loss) and why
+    the erratum survives it. ``places`` lists other places the same fact shows that are not records of their
+    own (a record marked ``same_fact`` is listed there by the catalog). A source's cases live in its
+    ``cases`` module, keyed by erratum id.
+    """
+
+    quote: tuple
+    confidence: str
+    charitable: str
+    places: tuple[str, ...] = ()
+
+    def __post_init__(self):
+        if not self.quote or not all(isinstance(q, str) or (isinstance(q, tuple) and len(q) == 2) for q in self.quote):
+            raise ValueError(f"Case.quote must be passages (text, or (document, text)), got {self.quote!r}")
+        if self.confidence not in CONFIDENCE:
+            raise ValueError(f"Case.confidence {self.confidence!r}: use one of {', '.join(CONFIDENCE)}")
+        if not self.charitable.strip():
+            raise ValueError("Case.charitable: state the most charitable reading of the source and answer it")
+
+    def passages(self, own: str) -> list[tuple[str, str]]:
+        """Every quoted passage as (document, text).
+
+        Parameters
+        ----------
+        own : str
+            The erratum's own document ("AN94002"), which a bare passage belongs to.
+
+        Returns
+        -------
+        list of tuple
+            (document, verbatim text) per passage, the disputed one first.
+        """
+        return [(own, q) if isinstance(q, str) else q for q in self.quote]
+
+
 @dataclass(frozen=True)
 class TextErratum:
     """A misprint or inconsistency that is not a number: a wrong unit, a name used twice, a copied text."""
@@ -244,3 +291,15 @@ class TextErratum:
     what: str
     evidence: str
     consequence: str
+    same_fact: str = ""  # the id of the erratum that carries this fact (listed there as another place)
+
+
+@dataclass(frozen=True)
+class ReadingNote:
+    """Not an error of the source: how the book reads it where the OCR lost a figure, what it reconstructs,
+    what the public record lacks, or what it assumes. Kept apart from the errata and out of their count."""
+
+    id: str
+    source: str
+    what: str
+    note: str

@@ -17,7 +17,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from .claim import Claim, TextErratum
+from .claim import Case, Claim, ReadingNote, TextErratum
 from .validate import InputError
 
 
@@ -130,6 +130,8 @@ class Source:
     # it imports sympy); its code is also the key of the on-disk check cache
     build_claims: Callable[[], list[Claim]] = lambda: []
     errata: tuple[TextErratum, ...] = ()
+    reading_notes: tuple[ReadingNote, ...] = ()  # not errors of the source: lost OCR, reconstructions, assumptions
+    cases: Mapping[str, Case] = field(default_factory=dict)  # erratum id -> the case against the source
 
     # -- parameters -------------------------------------------------------------------------
     @property

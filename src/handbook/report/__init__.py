@@ -10,7 +10,8 @@ from importlib import import_module
 _HOME = {"axes": "figures", "format_axis": "figures", "glue_all": "notebook", "is_note": "notebook", "note_only": "notebook",
          "setup": "notebook",
          "show_equation": "notebook", "BADGE": "tables", "ERRATA_KINDS": "tables", "design_table": "tables",
-         "eng": "tables", "errata_counts": "tables", "errata_md": "tables", "examples_table": "tables",
+         "eng": "tables", "errata_counts": "errata", "errata_md": "errata", "reading_notes_md": "errata",
+         "review_table": "errata", "examples_table": "tables",
          "table": "tables", "chapter_table": "spice_tables", "rows_table": "spice_tables",
          "confirm_table": "spice_tables"}
 

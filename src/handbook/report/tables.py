@@ -54,37 +54,7 @@ def _printed_and_recomputed(r: dict) -> str:
 
 #: the kinds of erratum (catalog.errata()), as the book names them
 ERRATA_KINDS = {"misprint": "misprint", "inconsistent": "inconsistent", "wrong method": "wrong method",
-                "equation": "equation differs",
-                "reconstructed": "reconstructed equation", "text": "text erratum"}
-
-
-def errata_counts(rows: list[dict]) -> Markdown:
-    """How many errata of each kind each source document has, as a table."""
-    notes = list(dict.fromkeys(r["note"] for r in rows))
-    kinds = [k for k in ERRATA_KINDS if any(r["kind"] == k for r in rows)]
-    body = [[n] + [sum(r["note"] == n and r["kind"] == k for r in rows) for k in kinds]
-            + [sum(r["note"] == n for r in rows)] for n in notes]
-    body.append(["all"] + [sum(r["kind"] == k for r in rows) for k in kinds] + [len(rows)])
-    return table(["source"] + [ERRATA_KINDS[k] for k in kinds] + ["total"], body)
-
-
-def errata_md(rows: list[dict]) -> Markdown:
-    """Errata as a list of entries (a seven-column table does not fit a book page): what, where, the
-    numbers, the evidence and what a designer should do about it."""
-    if not rows:
-        return Markdown("No errata.")
-
-    def sentence(text: str) -> str:
-        text = str(text).strip()
-        return text if text.endswith((".", "!", "?")) else text + "."
-
-    items = []
-    for r in rows:
-        nums = _printed_and_recomputed(r)
-        head = f"**{r['what']}** ({r['source']}; *{ERRATA_KINDS[r['kind']]}*)" + (f": {nums}." if nums else "")
-        items.append(f"- {head}\\\n  Evidence: {sentence(r['evidence'])}\\\n"
-                     f"  For a designer: {sentence(r['consequence'])}")
-    return Markdown("\n".join(items))
+                "equation": "equation differs", "text": "text erratum"}
 
 
 def table(header: list[str], rows: list[list]) -> Markdown:

@@ -6,12 +6,13 @@ shift (figure 3, eq 1 to 8) and the improved one bridged by a zener (figure 4, a
 from __future__ import annotations
 
 from ...core import Source
-from . import claims, data
+from . import cases, claims, data
 from .circuit import b_for, factor_a, factor_b, r10_for, supply_worst_case, v_cs_trip
 
 SOURCE = Source(name=data.NAME, title="AN93008 current limiters", parameters=data.PARAMETERS, facts=data.FACTS,
                 equations_module=f"{__name__}.equations",
-                build_claims=claims.build, errata=data.ERRATA)
+                build_claims=claims.build, errata=data.ERRATA, cases=cases.CASES,
+                reading_notes=data.READING_NOTES)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 
 __all__ = ["SOURCE", "b_for", "equation", "evaluate", "factor_a", "factor_b", "params", "r10_for",

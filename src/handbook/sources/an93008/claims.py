@@ -2,9 +2,10 @@
 from __future__ import annotations
 
 from ...core import Claim, Printed
-from ..an94002.claims_limiter import zener_spread as _zener_spread  # the same BZX79-C8V2 and datasheet facts
+from ..an94002.claims_limiter import tc_column_top  # the same BZX79-C8V2 and datasheet facts
+from ..an94002.claims_limiter import zener_spread as _zener_spread
 from .circuit import b_for, factor_a, r10_for, supply_worst_case
-from .data import FACTS, NAME
+from .data import NAME
 
 #: BZX79-C8V2 V_Z minimum at 5 mA (datasheet facts: 7.7 to 8.7 V)
 
@@ -128,23 +129,21 @@ def build() -> list[Claim]:
               printed=Printed("2", "%"), compute=_drift_pct, reason="155 mV / 7.7 V = 2.01 %", chapter=Z),
         Claim(id="an93008-zener-tc", where=f"{NAME} 2.2 vs BZX79 datasheet",
               quantity="largest zener temperature coefficient ('max. 6.2 mV/°C')", printed=Printed("6.2", "mV/K"),
-              chapter=Z, compute=lambda p: FACTS["bzx79_tc"].value[1] * p["zener_voltage"], basis="BZX79 datasheet",
-              reason="BZX79 datasheet: up to +0.08 %/K, 6.56 mV/K at 8.2 V; over 25 C +- 25 C the drift becomes "
-                     "+-164 mV, +-2.13 % of the note's 7.7 V (as AN94002 2.4, an94002-zener-tc)",
-              consequence="the drift term grows from +-2.0 % to +-2.1 %: negligible by itself; with the datasheet's "
-                          "+-6.1 % spread the zener's share is about +-8.2 %"),
+              chapter=Z, relation="<=", compute=lambda p: tc_column_top(p["zener_voltage"]), basis="BZX79 datasheet",
+              reason="6.2 mV/K at 8.2 V is 0.076 %/K, inside the datasheet's +0.03 to +0.08 %/K column, which is "
+                     "printed to one figure (as AN94002 2.4)"),
         Claim(id="an93008-zener-total", where=f"{NAME} 2.2", quantity="zener tolerance with drift, 5 % part",
               printed=Printed("7", "%"), compute=lambda p: p["zener_tolerance"] + round(_drift_pct(p), 2),
               reason="5 % + 2 %, added linearly", chapter=Z),
         Claim(id="an93008-zener-share", where=f"{NAME} 2.2 vs BZX79 datasheet",
               quantity="zener tolerance with drift ('together with a zener diode tolerance of +-5 % ... then "
                        "+-7 %'), with the part's datasheet spread",
-              printed=Printed("7", "%"), chapter=Z, basis="BZX79 datasheet",
+              printed=Printed("7", "%"), chapter=Z, basis="BZX79 datasheet", same_fact="an93008-zener-spread",
               compute=lambda p: _zener_spread(p) + _drift_pct(p),
               reason="the BZX79-C8V2 spreads +-6.10 % (7.7 to 8.7 V), not +-5 %; with the note's drift, 155 mV / "
                      "7.7 V = 2.01 %, added linearly as the note does: +-8.11 %",
-              consequence="the zener's share of the trip tolerance is about +-8.1 %, not +-7 % (+-8.2 % with the "
-                          "datasheet's 6.56 mV/K), and the note's total becomes 1.12 x 1.081 x 1.05 = +-27 %, not "
+              consequence="the zener's share of the trip tolerance is about +-8.1 %, not +-7 %, and the note's total "
+                          "becomes 1.12 x 1.081 x 1.05 = +-27 %, not "
                           "+-26 %; the budget's bigger faults are its resistor term (an93008-resistor-tol)"),
         Claim(id="an93008-total-zener", where=f"{NAME} 2.2", quantity="total tolerance, 1.12 x 1.07 x 1.05",
               printed=Printed("26", "%"), compute=lambda p: 1.12 * 1.07 * 1.05 - 1,

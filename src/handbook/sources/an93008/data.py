@@ -1,7 +1,7 @@
 """AN93008: the values of its figure 3 and figure 4 limiters and its tolerance budget, and its textual errata."""
 from __future__ import annotations
 
-from ...core import Param, TextErratum
+from ...core import Param, ReadingNote, TextErratum
 from ..an94002.data import FACTS as _AN94002_FACTS
 
 NAME = "AN93008"
@@ -38,9 +38,6 @@ PARAMETERS = (
 )
 
 ERRATA = (
-    TextErratum("an93008-t-unit", f"{NAME} 2.1", "the one-transistor limit's drift is printed '-0.25 °C'",
-                "-2 mV/K over 800 mV is -0.25 %/K; AN94002 2.3 prints the same sentence with '%/°C'",
-                "none once read as %/K"),
     TextErratum("an93008-t-gnd", f"{NAME} 2 vs AN94002 3",
                 "'all GND pins are internally interconnected', the reason given for keeping the sense resistor out "
                 "of the ground return",
@@ -48,7 +45,14 @@ ERRATA = (
                 "line and has externally to be connected to GND2'",
                 "connect GND3 to GND2 on the board, as AN94002 says; whether GND1 and GND2 are joined on the chip "
                 "(AN93008's reason for a supply-side sense resistor) neither note shows"),
-    TextErratum("an93008-t-fig4", f"{NAME} 2.2, figure 4", "figure 4's resistor values did not survive the OCR",
-                "the text gives A = 0.74 and a 2 V shift; AN94002 figure 3 is the same circuit with 5.6 k / 16 k",
-                "the book evaluates figure 4 with AN94002's values, which give the note's A"),
+)
+
+#: what is not an error of the note: how the book reads it
+READING_NOTES = (
+    ReadingNote("an93008-t-unit", f"{NAME} 2.1", "the one-transistor limit's drift reads '-0.25 °C'",
+                "the math OCR left an empty '\\text{ }' where '%/' belongs ('%' starts a comment in LaTeX), and AN94002 "
+                "2.3 prints the same sentence with '%/°C': -2 mV/K over 800 mV is -0.25 %/K"),
+    ReadingNote("an93008-t-fig4", f"{NAME} 2.2, figure 4", "figure 4's resistor values did not survive the OCR",
+                "the text gives A = 0.74 and a 2 V level shift; AN94002 figure 3 is the same circuit with 5.6 k / "
+                "16 k, which give the note's A, so the book evaluates figure 4 with those values"),
 )

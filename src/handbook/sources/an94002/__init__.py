@@ -7,7 +7,7 @@ it), the note's values, the equations with their derivations and every number th
 from __future__ import annotations
 
 from ...core import Source
-from . import claims, data
+from . import cases, claims, data
 from .circuit import (
     c_min_for_impedance,
     cap_cd_min,
@@ -50,7 +50,7 @@ from .parts import parts_rows as _parts_rows
 
 SOURCE = Source(name=NAME, title="TDA5143/TDA5144 evaluation board", parameters=data.PARAMETERS,
                 facts=FACTS, equations_module=f"{__name__}.equations",
-                build_claims=claims.build, errata=data.ERRATA)
+                build_claims=claims.build, errata=data.ERRATA, cases=cases.CASES)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 
 

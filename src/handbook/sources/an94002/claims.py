@@ -31,15 +31,15 @@ def fact(key: str, index: int):
     ----------
     key : str
         The fact's name in :data:`~handbook.sources.an94002.data.FACTS`.
-    index : int
-        Which of its figures (they are tuples: min/typ/max, low/high).
+    index : int or None
+        Which of its figures (tuples: min/typ/max, low/high); None for a fact that is one figure.
 
     Returns
     -------
     callable
         A function of the parameters (which it ignores) returning the figure, SI units.
     """
-    return lambda p: FACTS[key].value[index]
+    return lambda p: FACTS[key].value if index is None else FACTS[key].value[index]
 
 
 def cap_st(p):
@@ -289,11 +289,11 @@ def one_transistor() -> list[Claim]:
               printed=Printed("-0.25", "%/K"), chapter=ch, compute=lambda p: limit_tc(p["v_be"], p["v_be_tc"]),
               reason="-2 mV/K / 800 mV"),
         Claim(id="an94002-vbe", where=f"{NAME} 2.3 vs BC557 datasheet", quantity="V_be at which T2 limits",
-              printed=Printed("0.8", "V"), chapter=ch, compute=fact("bc557_vbe", 2),
-              reason="BC557 V_BE(on) is 0.55 to 0.70 V at 2 mA; 0.8 V is above the maximum, so the real limit is "
-                     "lower than R7 = 0.8 V / I_lim predicts (by about 22 % at the typical 0.62 V)",
-              basis="BC557 datasheet", consequence="R7 sized with 0.8 V limits about 20 % below the target with a "
-                                                   "typical BC557; check the limit on the board"),
+              printed=Printed("0.8", "V"), chapter=ch, compute=fact("bc557_vbe_10ma", None), relation="<=",
+              reason="T2 takes over the OTA's drive to the output transistor's base, so it runs at milliamps to tens of "
+                     "milliamps (the OTA sinks up to 40 mA), where the BC556-558 sheets give V_BE(on) up to 0.82 V "
+                     "(at 10 mA); the 2 mA column (0.55 to 0.70 V) does not bound it. 'About 0.8 V' is inside",
+              basis="BC557 datasheet"),
     ]
 
 

@@ -118,8 +118,10 @@ FACTS = {
     "cap_st_current": Fact((1.5e-6, 2.0e-6, 2.5e-6), f"{TDA5144}, CAP-ST charge/discharge current"),
     "v_mot_range": Fact((1.7, 16.0), f"{TDA5144}, V_MOT 1.7 to 16 V"),
     "bc557_vbe": Fact((0.55, 0.62, 0.70), "BC557 datasheet (one maker): V_BE(on) at 2 mA min/typ/max"),
+    "bc557_vbe_10ma": Fact(0.82, "BC556-BC558 datasheets (MCC, Rectron): V_BE(on) up to 0.82 V at I_C = 10 mA, V_CE = 5 V"),
     "bzx79_vz": Fact((7.7, 8.7), f"{BZX79}: BZX79-C8V2 V_Z 7.7 to 8.7 V at 5 mA (the C series is 'about +-5 %')"),
-    "bzx79_tc": Fact((0.03e-2, 0.08e-2), f"{BZX79}: temperature coefficient +0.03 to +0.08 %/K"),
+    "bzx79_tc": Fact((0.03e-2, 0.08e-2), f"{BZX79}: temperature coefficient +0.03 to +0.08 %/K, a column printed to "
+                     "one significant figure (0.08 holds up to 0.085 %/K)"),
 }
 
 #: misprints and inconsistencies of AN94002 that are not numbers
@@ -129,12 +131,14 @@ ERRATA = (
                 "eq 6 sets dV_capmin = 2.3 - 0.9 = 1.4 V; eq 7 calls the smallest swing safe from noise dV_capmin "
                 "too, and eq 8 then renames the window dV_capmax",
                 "read eq 7 and 8 with dV_win (window) and dV_noise (floor); using 1.4 V in eq 7 would give a top "
-                "speed 14 times too low"),
+                "speed 14 times too low against the 0.1 V floor the book assumes (the note gives none)"),
     TextErratum("an94002-t-160", f"{NAME} 2.1.2", "'CAP-CD >= 160 / 1800 x 6' read left to right is 0.533 uF",
                 "the printed result 0.0148 uF shows the intended 160 / (1800 x 6)", "none once read as intended"),
     TextErratum("an94002-t-1v", f"{NAME} 2 and 2.3",
                 "the one-transistor limiter needs 'about 1 V' (section 2) or 'about 0.8 V' (2.3)",
-                "both are rough figures for the same V_be; the BC557 datasheet gives 0.55 to 0.70 V at 2 mA",
+                "both are rough figures for the same V_be of the same transistor, which the note's two sections "
+                "print 25 % apart; which holds depends on T2's collector current (the BC556-558 sheets span 0.55 V "
+                "at 2 mA to 0.82 V at 10 mA)",
                 "size R7 from the measured limit, not from either figure"),
     TextErratum("an94002-t-12nc", f"{NAME} 4, parts list", "two 12NC codes decode to other values than printed",
                 "R14 ...53701 is 700 ohm by the decade rule, not an E-series value (printed 750 ohm, whose code is "
@@ -142,6 +146,7 @@ ERRATA = (
                 "10 nF), but the OCR's code column holds 11 codes for the 10 capacitors, so which code belongs to C6 "
                 "is uncertain. R1 ...53229 is 22 ohm as printed (9 is the decade of 10 to 99 ohm)",
                 "order by value and check the code: a C6 of 220 nF would make the watchdog 22 times longer"),
-    TextErratum("an94002-t-cadcd", f"{NAME} 2.1.2", "'CAD-CD' and 'CAD-DC' for CAP-CD and CAP-DC", "typographical",
-                "none"),
+    TextErratum("an94002-t-cadcd", f"{NAME} 2.1.2", "'CAD-CD' and 'CAD-DC' for CAP-CD and CAP-DC",
+                "typographical: the same paragraphs also print CAP-CD and CAP-DC",
+                "none once read as CAP-CD and CAP-DC"),
 )

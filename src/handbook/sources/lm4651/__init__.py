@@ -6,7 +6,7 @@ datasheet's equations 1 to 12 (``equations``) and its "Example Design", number b
 from __future__ import annotations
 
 from ...core import Source
-from . import claims, data
+from . import cases, claims, data
 from .circuit import (
     A_OM,
     DEVICE,
@@ -36,7 +36,8 @@ from .data import FACTS
 
 SOURCE = Source(name=data.NAME, title="LM4651/LM4652 170 W class-D amplifier", parameters=data.PARAMETERS,
                 facts=FACTS, equations_module=f"{__name__}.equations",
-                build_claims=claims.build, errata=data.ERRATA)
+                build_claims=claims.build, errata=data.ERRATA, cases=cases.CASES,
+                reading_notes=data.READING_NOTES)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 
 __all__ = [

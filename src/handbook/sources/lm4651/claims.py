@@ -84,22 +84,26 @@ def build() -> list[Claim]:
               chapter=OSC),
         Claim(id="lm4651-f-15k", where=f"{NAME} table, R_OSC = 15 k", quantity="switching frequency at R_OSC = 15 k",
               printed=Printed("65", "kHz"), compute=lambda p: f_sw_for(15e3),
-              reason="eq 5 gives 1e9 / 19000 = 52.6 kHz", basis="eq 5", chapter=OSC,
-              consequence="eq 5 and the table disagree by 20 % at low frequencies: measure f_sw on the board"),
+              reason="eq 5 gives 1e9 / 19000 = 52.6 kHz; eq 5, the table and the pin 16 text are three different "
+                     "relations between R_OSC and f_sw (200 / 250 / 225 kHz at 0, 65 kHz at 15 k, 75 kHz at 15.5 k)",
+              basis="eq 5", chapter=OSC,
+              consequence="eq 5 and the table disagree by 20 % at low frequencies and 25 % at the top: measure f_sw on "
+                          "the board, and stay below 200 kHz unless it is measured"),
         Claim(id="lm4651-f-0", where=f"{NAME} table, R_OSC = 0", quantity="switching frequency at R_OSC = 0",
               printed=Printed("200", "kHz", sig=3), compute=lambda p: f_sw_for(0.0),
               reason="eq 5 gives 1e9 / 4000 = 250 kHz, above the 225 kHz limit", basis="eq 5", chapter=OSC,
+              same_fact="lm4651-f-15k",
               consequence="eq 5 overstates the top of the range; stay below 225 kHz"),
         Claim(id="lm4651-f-pin-15k5", where=f"{NAME} pin 16 (OSC) description",
               quantity="switching frequency at R_OSC = 15.5 k ('from 75kHz')", printed=Printed("75", "kHz"),
-              compute=lambda p: f_sw_for(15.5e3), basis="eq 5", chapter=OSC,
+              compute=lambda p: f_sw_for(15.5e3), basis="eq 5", chapter=OSC, same_fact="lm4651-f-15k",
               reason="eq 5 gives 1e9 / 19500 = 51.3 kHz; the LM4651 table gives 65 kHz at the smaller 15 k, so 75 kHz "
                      "at 15.5 k contradicts the table as well",
               consequence="the pin description overstates the bottom of the range by 46 % against eq 5; design with "
                           "eq 5 and its table spread (-20 %/+23.5 %), not with the pin description"),
         Claim(id="lm4651-f-pin-0", where=f"{NAME} pin 16 (OSC) description",
               quantity="switching frequency at R_OSC = 0 ('to 225kHz')", printed=Printed("225", "kHz"),
-              compute=lambda p: f_sw_for(0.0), basis="eq 5", chapter=OSC,
+              compute=lambda p: f_sw_for(0.0), basis="eq 5", chapter=OSC, same_fact="lm4651-f-15k",
               reason="eq 5 gives 1e9 / 4000 = 250 kHz; the LM4651 table gives 200 kHz at R_OSC = 0",
               consequence="three tops for one resistor (200, 225, 250 kHz): above 200 kHz measure f_sw on the board"),
         Claim(id="lm4651-dead-time", where=f"{NAME} table T_dead and eq 4", quantity="dead time at R_DLY = 0",
@@ -109,14 +113,14 @@ def build() -> list[Claim]:
                           "take the dead time from measurement"),
         Claim(id="lm4651-rosc", where=f"{NAME} Example Design", quantity="R_OSC for 125 kHz with R_DLY = 5 k",
               printed=Printed("3.9", "kohm"), compute=lambda p: r_osc_for(p["f_sw"], p["r_dly"]),
-              reason="eq 6 gives 4.0 k for R_DLY = 0, and the text adds about 2 k for R_DLY = 5 k: 6.0 k",
-              chapter=OSC,
-              consequence="with R_DLY = 5 k, 3.9 k runs at 169.5 kHz by eq 5 and the stated correction; by the "
-                          "Example Design's own method (eq 9 with its 350 ns, eq 10, 2 x 0.230 ohm) the LM4652 then "
-                          "dissipates 23.5 W instead of 21.0 W at 125 W, and on the example's 2.5 K/W heat sink "
-                          "(TF package, 0.2 K/W grease) at its 50 C ambient the junction reaches about 160 C instead "
-                          "of 149 C, past its 150 C limit (with the LM4651 table's typical 310 ns: 22.5 W instead of "
-                          "20.3 W, 156 C); fit 6.0 k, or check f_sw on the board"),
+              reason="eq 6 gives 4.0 k for R_DLY = 0, and the same datasheet says R_OSC must rise by about 2 k for "
+                     "R_DLY = 5 k: 6.0 k. The LM4651 table's own row 'R_OSC = 4k, f_SW = 125kHz' (figure 1's circuit, "
+                     "R_DLY not stated) supports the printed 3.9 k instead, so two statements of the datasheet disagree",
+              basis="the datasheet's +2 k rule for R_DLY = 5 k", chapter=OSC,
+              consequence="which one holds decides the frequency: if the +2 k rule does, 3.9 k runs at 169.5 kHz and, "
+                          "by the Example's own loss method, the LM4652 dissipates 23.5 W instead of 21.0 W, with the "
+                          "junction near 160 C on the example's heat sink; if the table row does, 3.9 k is right. "
+                          "Measure f_sw on the board before sizing the heat sink"),
         Claim(id="lm4651-hp-corner", where=f"{NAME} DC offset", quantity="input high-pass corner, R1 = 25 k and 1 uF",
               printed=Printed("6.35", "Hz"), compute=lambda p: 1 / (2 * math.pi * R1_OFFSET * C_IN_OFFSET),
               reason="1 / (2 pi x 25 k x 1 uF) = 6.366 Hz: rounded 6.37, truncated 6.36; 6.35 is neither "
@@ -183,25 +187,14 @@ def build() -> list[Claim]:
         Claim(id="lm4651-system-pd", where=f"{NAME} system table", quantity="system dissipation: LM4652 + LM4651",
               printed=P_SYSTEM, compute=lambda p: _p_4652(p) + p["p_driver"],
               reason="20.97 W + about 1 W in the LM4651", chapter=TH),
-        Claim(id="lm4651-pd-75k", where=f"{NAME} system table, P_d at f_SW = 75 kHz, P_O = 135 W",
-              quantity="LM4651 + LM4652 dissipation at 75 kHz and 135 W, by the Example's method",
-              printed=Printed("22", "W"), compute=lambda p: _p_system_at(p, 135.0, 75e3),
-              basis="eq 9, eq 10 and the Example Design's method", chapter=TH,
-              reason="(25 + 26 + 350) ns x 75 kHz = 3.01 %: 4.19 W switching + 135/4 x 0.46 = 15.53 W conduction "
-                     "+ 1 W in the LM4651 = 20.71 W (20.28 W with the table's 310 ns)",
-              consequence="the method that matches the table at 125 kHz (22 W) falls 1.3 W (6 %) short of it at "
-                          "75 kHz: eq 9 is an empirical fit, not a loss law; where the operating point is a table "
-                          "row, size the heat sink from the table's 22 W"),
         Claim(id="lm4651-eta-5w", where=f"{NAME} system table, efficiency at P_O = 5 W vs I_CQ",
               quantity="efficiency at 5 W if the quiescent current still flows (upper bound)",
               printed=Printed("55", "%"), relation="<=",
-              compute=lambda p: 5.0 / (5.0 + I_CQ_SYSTEM * 40.0),  # the table is at +-20 V
+              compute=lambda p: 5.0 / (5.0 + I_CQ_SYSTEM * 20.0),  # |I_VCC+| + |I_VEE-| from +-20 V rails
               basis="system table, I_CQ", chapter=TH,
-              reason="the table's total quiescent current, 124 mA (the smaller of the row's two values, 237 and 124 mA; "
-                     "its conditions did not survive the OCR), at +-20 V is 4.96 W of loss before any output: at "
-                     "5 W out the efficiency is at most 5 / 9.96 = 50.2 %; 55 % allows only 4.09 W (102 mA)",
-              consequence="one of the two figures is optimistic: expect about 50 % at 5 W, or check the idle "
-                          "current on the board (the book's idle-loss model uses the 55 % and says so)"),
+              reason="the datasheet defines the total quiescent current as |I_VCC+| + |I_VEE-| (LM4651 table), so "
+                     "124 mA (the smaller of the row's two values) from +-20 V rails costs 20 V x 124 mA = 2.48 W: "
+                     "at 5 W out the efficiency is at most 5 / 7.48 = 66.8 %, and the printed 55 % is below it"),
         Claim(id="lm4651-l1-rating", where=f"{NAME} recommended components, L1 (CoilCraft PCV-0-473-05, 47 uH, 5 A)",
               quantity="current rating of the recommended 47 uH choke against the Example's rms current",
               printed=Printed("5", "A"), relation=">=", compute=lambda p: (p["p_out"] / p["r_load"]) ** 0.5,
@@ -213,7 +206,7 @@ def build() -> list[Claim]:
                           "peak of the output current plus half the ripple"),
         Claim(id="lm4651-eps0", where=f"{NAME} eq (8)", quantity="vacuum permittivity in pF/in",
               printed=Printed("0.22479", "1"), compute=lambda p: EPS0_PF_PER_IN,
-              reason="8.8542e-12 F/m x 0.0254 m/in = 0.22490 pF/in", basis="CODATA", chapter=OSC,
+              reason="a misprinted constant: 8.8542e-12 F/m (CODATA) x 0.0254 m/in = 0.22490 pF/in", chapter=OSC,
               consequence="negligible (0.05 %)"),
         Claim(id="lm4651-gain-4k7", where=f"{NAME} Example Design",
               quantity="gain with R1 = 4.7 k, R2 = 3.5 k (figure 1 values)", printed=GAIN,

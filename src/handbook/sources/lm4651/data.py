@@ -2,7 +2,7 @@
 values and the textual errata."""
 from __future__ import annotations
 
-from ...core import Fact, Param, TextErratum
+from ...core import Fact, Param, ReadingNote, TextErratum
 
 NAME = "LM4651/LM4652"
 DATASHEET = "LM4651/LM4652 datasheet (National Semiconductor, 2000)"
@@ -67,11 +67,11 @@ ERRATA = (
                 "0.230 ohm is optimistic against the 300 mOhm maximum: conduction loss may be 30 % higher"),
     TextErratum("lm4651-t-r1", f"{NAME}, DC offset vs Example Design vs figure 1",
                 "R1 is 25 k in the DC-offset section, 20 k in the Example Design and 4.7 k in figure 1",
-                "with the 1 uF input capacitor the high-pass corner is 6.4 Hz, 8.0 Hz and 33.9 Hz: the three "
-                "values are three different amplifiers",
-                "figure 1's 4.7 k with 1 uF cuts at 34 Hz, into a subwoofer's band: with 4.7 k use at least "
-                "4.7 uF (7.2 Hz, below the Example Design's 8.0 Hz, which needs 4.26 uF), or 6.8 uF (5.0 Hz) to "
-                "stay below the DC-offset section's 6.4 Hz (5.32 uF)"),
+                "20 k and 4.7 k are an explicit alternative of the Example Design ('If a 20k input impedance is not "
+                "required ... R1's value set to 4.7k'); only the DC-offset section's 25 k, beside a 1 uF capacitor, "
+                "matches neither",
+                "choose C_IN for the R1 you fit (the Example warns that a lower R1 needs a larger C_IN): 1 uF is "
+                "paired only with the 25 k (6.4 Hz); figure 1's C_IN did not survive the OCR"),
     TextErratum("lm4651-t-frange", f"{NAME}, Features, Oscillator Control, pin 16 and the LM4651 table",
                 "the switching-frequency range is printed four ways: 50 to 200 kHz (Features), 50 to 225 kHz "
                 "(Oscillator Control), 75 to 225 kHz for R_OSC = 15.5 k to 0 (pin 16) and 65 to 200 kHz for "
@@ -79,18 +79,18 @@ ERRATA = (
                 "eq 5 gives 51.3 to 250 kHz over 15.5 k to 0; a larger R_OSC runs slower, so the table's 65 kHz at "
                 "15 k and pin 16's 75 kHz at 15.5 k cannot both hold (see lm4651-f-pin-15k5 and lm4651-f-pin-0)",
                 "the book takes 50 to 225 kHz (Oscillator Control) as the usable range and the table's typical "
-                "points for eq 5's spread; above 200 kHz, measure"),
+                "points for eq 5's spread; above 200 kHz, measure", same_fact="lm4651-f-15k"),
     TextErratum("lm4651-t-170w", f"{NAME}, title and Key Specifications",
                 "'170 W' output power into 4 ohm at < 10 % THD, with no switching frequency stated",
                 "the system table, specified at f_SW = 125 kHz unless stated, gives 155 W at 10 % THD (125 W at "
                 "1 %); 170 W is its f_SW = 75 kHz row",
                 "at the recommended 125 to 145 kHz expect 155 W at 10 % THD and 125 W at 1 %; 170 W needs 75 kHz, "
                 "with the worse THD+N below 10 W that the datasheet warns of"),
-    TextErratum("lm4651-t-standby", f"{NAME}, Key Specifications, system table and Standby Function",
-                "standby attenuation '>100 dB (Min)', '>115 dB' and '>120 dB'",
-                "the key specification gives 100 dB minimum, the system table >115 dB (typical column), the "
-                "Standby Function text 'complete (>120dB)'",
-                "none in practice; design with the 100 dB minimum, not the text's 120 dB"),
+    TextErratum("lm4651-t-eq-labels", f"{NAME}, Example Design",
+                "the gain equation, called 'Equation (12)' in the text, is labelled '(3)', and the next line '(4)'",
+                "eq 3 is the current limit and eq 4 the dead time; the Example's own labels (3) and (4) name two "
+                "other equations",
+                "none once the gain formula is read as eq 12"),
     TextErratum("lm4651-t-theta-ja", f"{NAME}, thermal resistances vs note 3",
                 "the LM4651's junction-to-ambient resistance is 52 K/W (thermal table) and 62 K/W (note 3)",
                 "the thermal table lists 'LM4651 N Package theta_JA 52 C/W'; note 3 derates the LM4651 'based on "
@@ -118,10 +118,25 @@ ERRATA = (
                 "eq 12, which contains neither",
                 "eq 12 as printed in the components table and the Example Design has only R1, R2, R_f11 and R_f12, "
                 "and with them reproduces the Example's 7.5 (R2 = 0.7 R1)",
-                "use eq 12 for the gain and eq 7 (R_f C_f) for the error amplifier's pole; the datasheet does not "
-                "say how R_f enters the gain, so confirm the gain on the built amplifier"),
-    TextErratum("lm4651-t-supply", f"{NAME}, Example Design",
-                "the supply (+-20 V) comes from a graph that did not survive",
-                "the electrical tables are specified at +-20 V, 4 ohm, 125 kHz, consistent with the choice",
-                "none"),
+                "the error amplifier's own gain is set by R_f and R1, so the Error Amplifier text may be right about "
+                "that stage; the slips are the components table calling it the system's gain and the Example "
+                "inserting R_f and V_CC into eq 12. Use eq 12 for the gain and eq 7 (R_f C_f) for the error "
+                "amplifier's pole, and confirm the gain on the built amplifier"),
+)
+
+#: what is not an error of the datasheet: how the book reads it
+READING_NOTES = (
+    ReadingNote("lm4651-t-standby", f"{NAME}, Key Specifications, system table and Standby Function",
+                "standby attenuation printed as '>100dB (Min)', '>115 dB' and '(>120dB)'",
+                "three lower bounds (a guaranteed minimum, a typical in the system table, a figure in prose) that "
+                "agree; the book designs with the guaranteed 100 dB"),
+    ReadingNote("lm4651-t-supply", f"{NAME}, Example Design", "the +-20 V supply comes from a graph the OCR lost",
+                "the electrical tables are specified at +-20 V, 4 ohm and 125 kHz, consistent with the Example's "
+                "choice; the book takes +-20 V"),
+    ReadingNote("lm4651-pd-75k", f"{NAME}, system table, P_d at f_SW = 75 kHz, P_O = 135 W",
+                "eq 9 and eq 10 against the table's 75 kHz row",
+                "the Example Design's method (eq 9 with its 350 ns, eq 10, 2 x 0.230 ohm, 1 W in the LM4651) gives "
+                "20.7 W where the table prints 22 W (20.3 W with the table's 310 ns): a 6 % miss of an empirical "
+                "estimate against a measured typical, which the datasheet never says eq 9 reproduces. Where the "
+                "operating point is a table row, the book sizes the heat sink from the table"),
 )

@@ -260,7 +260,7 @@ def eq11() -> Equation:
 
 
 def eq12() -> Equation:
-    """Eq 12 (reconstructed): the closed-loop gain.
+    """Eq 12: the closed-loop gain, as the Example Design and the components table print it.
 
     Returns
     -------
@@ -268,12 +268,17 @@ def eq12() -> Equation:
         The record ``lm4651-eq12``: the gain, a pure number, against R1, R2, R_f11 and R_f12 (ohm).
     """
     return Equation(
-        id="lm4651-eq12", source=f"{NAME}, eq (12) (reconstructed)", title="Closed-loop gain", lhs=sp.Symbol("G"),
+        id="lm4651-eq12", source=f"{NAME}, eq (12)", title="Closed-loop gain", lhs=sp.Symbol("G"),
         lhs_unit=sp.Integer(1), printed=(R2 / R1) * ((Rf11 + Rf12) / Rf12) - R2 / R1 + sp.Rational(1, 2),
-        derived=R2 * Rf11 / (R1 * Rf12) + sp.Rational(1, 2), units={R1: OHM, R2: OHM, Rf11: OHM, Rf12: OHM},
-        law="algebra only: the internal feedback amplifier is not described well enough to derive it",
-        reconstructed="the OCR of the Example Design reads '[...] + .5].(3)'; the component table prints the same "
-                      "formula without the '(3)', and it gives 10 R2/R1 + 0.5 = 7.5 for the printed R2 = 0.7 R1")
+        units={R1: OHM, R2: OHM, Rf11: OHM, Rf12: OHM}, law=NO_LAW, empirical=True,
+        fitted_to="the Example Design's gain of 7.5 with R2 = 0.7 R1 (its R_f11 = 620 k, R_f12 = 62 k); the internal "
+                  "feedback amplifier is not described well enough to derive the form, so it is not checked against "
+                  "a derivation",
+        table=(_pt("Example Design: 'R2 = .7R1' for '7.5V/V'", r"R_2 = 0.7\,R_1,\ R_{f11} = 620" + _KOHM
+                   + r",\ R_{f12} = 62" + _KOHM, {R1: 20e3, R2: 14e3, Rf11: 620e3, Rf12: 62e3}, "7.5", "1"),),
+        note="Printed intact in the Example Design and the components table; the '(3)' after it is the Example's own "
+             "equation label (the next line is 'R2 = .7R1 (4)'), which clashes with eq 3 and eq 4 "
+             "(lm4651-t-eq-labels).")
 
 
 def fb_pole1() -> Equation:

@@ -11,7 +11,8 @@ from .circuit import coil_voltages, design, operating_point
 from .data import APPLICATION
 
 SOURCE = Source(name=data.NAME, title="TCA5600/TCF5600 DC/DC converter (excerpt)", parameters=data.PARAMETERS,
-                equations_module=f"{__name__}.equations", errata=data.ERRATA)
+                equations_module=f"{__name__}.equations", errata=data.ERRATA,
+                reading_notes=data.READING_NOTES)
 params, evaluate, equation = SOURCE.params, SOURCE.evaluate, SOURCE.equation
 
 __all__ = ["APPLICATION", "SOURCE", "coil_voltages", "design", "equation", "evaluate", "operating_point", "params"]

@@ -5,7 +5,7 @@ The excerpt prints no worked numbers and no public copy of the electrical charac
 """
 from __future__ import annotations
 
-from ...core import Param, TextErratum
+from ...core import Param, ReadingNote
 
 NAME = "TCA5600"
 
@@ -31,9 +31,12 @@ PARAMETERS = (
           meaning="lowest oscillation frequency, above the audio band (the excerpt's 20 kHz)"),
 )
 
-ERRATA = (
-    TextErratum("tca5600-t-values", f"{NAME}, DC/DC converter", "no worked numbers, and no public electrical "
-                "characteristics for V12(H), V_CE(sat) and V_F", "datasheet_facts.md: no public copy found",
-                "the application values L1 = 300 uH and R1 = 0.68 ohm can only be checked against assumed device "
-                "values"),
+ERRATA = ()
+
+#: what is not an error of the excerpt: what the public record lacks
+READING_NOTES = (
+    ReadingNote("tca5600-t-values", f"{NAME}, DC/DC converter", "no worked numbers, and no public electrical "
+                "characteristics for V12(H), V_CE(sat) and V_F",
+                "no public copy of the electrical characteristics was found, so the application values L1 = 300 uH "
+                "and R1 = 0.68 ohm are checked against device values the chapter assumes and states"),
 )

@@ -1,7 +1,7 @@
 """TDA5341 excerpt: its example's values, and the TDA5144 datasheet's version of the same timer."""
 from __future__ import annotations
 
-from ...core import Param, TextErratum
+from ...core import Param, ReadingNote, TextErratum
 
 NAME = "TDA5341"
 TDA5144 = "TDA5144 datasheet (datasheet_facts.md)"
@@ -37,8 +37,11 @@ PARAMETERS = (
 ERRATA = (
     TextErratum("tda5341-t-inertia", f"{NAME}, start", "inertia printed in 'kg/m2'",
                 "the unit of inertia is kg m2 (as AN94002 prints it)", "none once read as kg m2"),
-    TextErratum("tda5341-t-typical", f"{NAME}, CAPCDM", "CAPCDM is sized with the typical 10 uA and no tolerance",
-                "AN94002 sizes the TDA5144's CAP-CD with the largest current and the narrowest window",
-                "at the lowest frequency a part with a high charge current or a narrow window saturates: "
-                "add the current spread and the capacitor tolerance as in the design chapter"),
+)
+
+#: what is not an error of the excerpt: how the book reads it
+READING_NOTES = (
+    ReadingNote("tda5341-t-typical", f"{NAME}, CAPCDM", "CAPCDM is sized with the typical 10 uA and no tolerance",
+                "design advice, not a worst-case design, and the excerpt gives no current spread; the design chapter "
+                "sizes the TDA5144's CAP-CD with its datasheet's spread and the capacitor's tolerance"),
 )
