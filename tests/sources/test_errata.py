@@ -11,7 +11,7 @@ import pytest
 from handbook import catalog
 from handbook.core import CONFIDENCE, UNIT_SCALES
 from handbook.sources import SOURCES
-from handbook.sources.review import ERRATA_REVIEW
+from handbook.sources.review import ERRATA_REVIEW, REREAD
 
 #: the app notes' OCR text, beside the project (not in the repository): HANDBOOK_APPNOTES overrides
 APPNOTES = Path(os.environ.get("HANDBOOK_APPNOTES", Path(__file__).resolve().parents[3] / "shared" / "appnotes"))
@@ -79,6 +79,12 @@ def test_every_decision_of_the_review_is_in_the_registries():
             assert d.id not in BY_ID and statuses[d.id] in ("exact", "rounding", "bound met", "conservative"), d.id
         else:
             assert d.outcome.startswith("rewritten as") and d.target in BY_ID and d.id not in BY_ID, d.id
+
+
+def test_the_reread_registered_what_survived_its_defender():
+    for d in REREAD.decisions:
+        assert (d.id in BY_ID) == (d.outcome == "registered"), d.id
+    assert len(REREAD.decisions) >= 6
 
 
 def _digits(text: str) -> int:

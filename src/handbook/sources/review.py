@@ -11,12 +11,16 @@ book disagrees with the review, ``why`` says so. Outcomes:
   read as a contradiction): moved to the reading notes;
 * ``removed``: not an error; the number stays in the examples registry with the status its numbers earn;
 * ``rewritten as <id>``: the entry misdescribed the source; the real slip is registered under the new id.
+
+A later sentence-by-sentence re-read of every source proposed new errata; a second reader whose only job was to
+defend the sources tried to knock each down (:data:`REREAD`): ``registered`` (with the hedge the defence left)
+or ``not registered``.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-OUTCOMES = ("kept", "tempered", "merged into", "reading note", "removed", "rewritten as")
+OUTCOMES = ("kept", "tempered", "merged into", "reading note", "removed", "rewritten as", "registered", "not registered")
 
 
 @dataclass(frozen=True)
@@ -145,4 +149,22 @@ ERRATA_REVIEW = Review(date="2026-11-25", scope="the 56 errata registered then, 
        "the source"),
 ))
 
-__all__ = ["ERRATA_REVIEW", "OUTCOMES", "Decision", "Review"]
+REREAD = Review(date="2026-11-25", scope="new errata from a sentence-by-sentence re-read, each defended by a second "
+                "reader", decisions=(
+    _d("an94002-t-mosfet", "stands", "registered", "the defence ('MOSFET' as a loose word for the pass transistor) "
+       "fails: the note names its BD434 and has no MOSFET; the sentence is AN93008's"),
+    _d("lm4651-t-c1-value", "weakened", "registered", "as a grouping slip in the table, the text's 0.1 to 1 uF "
+       "governing; the proposal's 'the common mistake' was dropped (the datasheet limits that warning to "
+       "single-ended use)"),
+    _d("lm4651-t-torque", "stands", "registered", "no unit or fastener fits both printed figures; 'probable', since it "
+       "rests on makers' mounting notes outside the sources"),
+    _d("lm4651-t-esd-pins", "weakened", "registered", "only as 'one of the two tables is wrong' (OCR or print), not as "
+       "a claim about which"),
+    _d("lm4651-t-roffset", "weakened", "registered", "as a mis-worded test condition with no consequence once read as "
+       "'not fitted'"),
+    _d("an93008-t-onchip", "knocked down", "not registered", "'the IC with external output driver' need not be one of "
+       "the three ICs named: the note covers the whole TDA514x family, and its limiters act on the supply path, "
+       "which serves either output stage"),
+))
+
+__all__ = ["ERRATA_REVIEW", "OUTCOMES", "REREAD", "Decision", "Review"]

@@ -95,6 +95,16 @@ CASES = {
                    'cannot be aligned for sure because the code column holds 11 codes (5 x 17224) for'
                    ' 10 capacitors (and 5 codes for R16..R19). Survives as hedged, depending on the '
                    'OCR; the text itself confirms C6 = 0.010 uF.'),
+    'an94002-t-mosfet': Case(quote=(
+        'the transistor T2 turns-on and decreases the drive for the MOSFET that determines the voltage',
+        'is regulated in an analogue way by a series regulator transistor T1 (BD434).',
+        ('AN93008', 'the transistor T1 turns-on and decreases the drive for the MOSFET that determines the voltage'),
+    ), confidence='certain',
+        charitable="'MOSFET' could be a loose word for the pass transistor, but the note names its device (the "
+                   "BD434) and the word is spelled out in a clean paragraph, so no OCR reading explains it: the "
+                   "sentence was carried over from AN93008, which covers either device. Survives as a wording slip "
+                   "of small consequence; a second reader, asked only to defend the note, found no reading that "
+                   "clears it."),
     'an94002-t-cadcd': Case(quote=(
         'With the signal on CAD-CD only three of the 6 commutations per cycle can be done.',
         'CAD-DC has been connected to a similar timer circuit and needs the same capacitor value as '

@@ -108,6 +108,39 @@ CASES = {
                    'the supported range, but the key specification drops that condition while the '
                    "table's default (125 kHz) gives 155 W. Survives as minor; the key-spec pairing of"
                    " '170W (Typ)' with its label is positional in the OCR."),
+    'lm4651-t-c1-value': Case(quote=(
+        'C ₁ & C _{BYP} 5µF - 10µF Metalized Polypropylene or Polyester Film',
+        "Filters high frequency noise from the amplifier's output to ground. Recommended value is 0.1μ F to 1μ F.",
+        'The recommended value for C₁ is 0.1µF to 1µF',
+    ), confidence='probable',
+        charitable="The row may be a supplier pointer for both film capacitors, its values meant for C_BYP (5 uF) "
+                   "and the output-to-ground alternative (10 uF, twice C_BYP), with C1 grouped in by accident; the "
+                   "same table's 'C_B1 & C_BT 0.1uF' reads '&' as both parts taking the value, and the row is "
+                   "printed twice, so it is no OCR loss. Survives as a grouping slip, the text's 0.1 to 1 uF "
+                   "governing; a second reader who defended the source weakened it to this."),
+    'lm4651-t-torque': Case(quote=(
+        'The recommended maximum torque applied to the mounting screw is 40 inch-lbs. or 3.',
+    ), confidence='probable',
+        charitable="The two figures agree (40 / 12 = 3.3), so it is no one-digit slip, and no unit (inch-ounces, "
+                   "another fastener) fits both; the next sentences tie the screw to warping the package. It rests "
+                   "on outside mounting data (no source here gives a torque), hence 'probable'; a second reader "
+                   "found no reading that clears it."),
+    'lm4651-t-esd-pins': Case(quote=(
+        'LM4652 (pins 2,6,10,11)',
+        '11 NC No connection.',
+        '14 HG₁ High-Gate #1 is the gate input to a top side MOSFET in the H-Bridge.',
+    ), confidence='depends on the OCR',
+        charitable="The rating block is badly damaged by the OCR, and a 4 read as 1 on an identical label printed "
+                   "twice would repeat; the pin table has a slip of its own. Survives only as 'one of the two is "
+                   "wrong', which is what a second reader defending the source conceded."),
+    'lm4651-t-roffset': Case(quote=(
+        'V_{IN} = 0V, I_O = 0mA, R_{OFFSET} = 0 Ω 0.7 V',
+        'The divider should be a $1.8M\\Omega$ from the +6V output (pin 6) to the input (other side of 25k, R1).',
+    ), confidence='probable',
+        charitable="'0 Ω' may be house shorthand for 'not fitted', and the intent (the offset before correction) is "
+                   "clear from the 1.8 M figures; but the same datasheet writes '0 Ω' literally for R_DLY and R_OSC, "
+                   "so as printed the condition says something else. Survives as a mis-worded test condition of no "
+                   "consequence once read as intended."),
     'lm4651-t-theta-ja': Case(quote=(
         'Thermal Resistance LM4651 N Package θJA θJC 52°C/W 22°C/W',
         'the LM4651 must be de–rated based on a 150°C maximum junction temperature and a thermal '

@@ -332,8 +332,8 @@ I_LIMIT = 10.0  # A: "the inductor ripple current and the peak output current mu
 I_Q_4651 = 36e-3  # A: LM4651 table, quiescent current with the LM4652 not connected (typical)
 L_REF, C_REF = 50e-6, 5e-6  # H, F: Output Stage Filtering, "a 50 uH inductor and a 5 uF Mylar capacitor"
 #: idle loss at +-20 V from the system table's 55 % efficiency at 5 W (R_DLY = 5 k, 125 kHz, 4 ohm): what is
-#: left of 5/0.55 - 5 W after conduction (200 mOhm typ, cold) and eq 9/10 switching. The table's I_CQ of
-#: 124 mA (x 40 V = 5.0 W) alone would exceed the 4.1 W of loss that 55 % allows, so it is not used.
+#: left of 5/0.55 - 5 W after conduction (200 mOhm typ, cold) and eq 9/10 switching, 3.35 W. The table's I_CQ of
+#: 124 mA is |I_VCC+| + |I_VEE-| (the datasheet's definition), 20 V x 124 mA = 2.48 W: below it, consistent.
 P_IDLE_REF = 5 / 0.55 - 5 - p_conduction(5.0, 4.0, 0.200) - p_switch(125e3, 5.0)
 
 

@@ -91,6 +91,37 @@ ERRATA = (
                 "eq 3 is the current limit and eq 4 the dead time; the Example's own labels (3) and (4) name two "
                 "other equations",
                 "none once the gain formula is read as eq 12"),
+    TextErratum("lm4651-t-c1-value", f"{NAME}, Recommendations for Critical External Components vs items 11 and "
+                "Output Stage Filtering", "the components table gives 'C1 & C_BYP 5uF - 10uF'; the text gives C1 as 0.1 "
+                "to 1 uF three times",
+                "External Components item 11, Output Stage Filtering and the Example Design all give C1 0.1 to 1 uF "
+                "(2 to 20 % of C_BYP = 5 uF); the table's '&' elsewhere means both parts take the value ('C_B1 & "
+                "C_BT 0.1uF')",
+                "fit C1 = 0.1 to 1 uF: the table most likely groups C1 with C_BYP under one film-capacitor supplier "
+                "(5 uF is the text's C_BYP, 10 uF its output-to-ground alternative of twice C_BYP); 5 to 10 uF per "
+                "output would lower the output filter's corner from 7.1 kHz (C_BYP alone) to 5.8 or 5.0 kHz"),
+    TextErratum("lm4651-t-torque", f"{NAME}, Heat Sinking", "a recommended maximum screw torque of '40 inch-lbs. or "
+                "3.3 foot-lbs.' for the 15-lead TO-220 package",
+                "40 in-lb is 4.5 N m (and 3.3 ft-lb, so not a slip of one figure); makers' mounting notes for TO-220 "
+                "and the comparable 15-lead Multiwatt tab give at most 0.7 to 0.8 N m (STMicroelectronics AN260 and "
+                "TN1225), and the datasheet's next sentences warn that over-tightening warps the package",
+                "tighten to the package maker's 0.55 to 0.7 N m (about 5 to 6 in-lb); 40 in-lb strips an M3 or 6-32 "
+                "thread or warps the tab, and a warped tab raises theta_CS, which the Example budgets at 0.2 K/W"),
+    TextErratum("lm4651-t-esd-pins", f"{NAME}, Absolute Maximum Ratings vs the LM4652 pin table",
+                "the ESD rating names the LM4652's 'pins 2,6,10,11'; the pin table makes pin 11 'NC' and pin 14 HG1, "
+                "the fourth gate input beside LG1 (2), LG2 (6) and HG2 (10)",
+                "either the label's 11 is an OCR or printing slip for 14, or one of the two tables is wrong (the pin "
+                "table has another slip, lm4651-t-pin15); the sources cannot decide which",
+                "treat all four gate inputs, pins 2, 6, 10 and 14, as the ESD-rated pins, and handle the LM4652 as an "
+                "ESD-sensitive part throughout"),
+    TextErratum("lm4651-t-roffset", f"{NAME}, system table V_OS vs Output Offset Voltage Minimization",
+                "the output offset of 0.7 V is specified at 'R_OFFSET = 0 Ω'",
+                "R_OFFSET is the 1.8 M divider from the +6 V output to the input; read literally, 0 ohm puts 6 V on "
+                "the input and rails the output (6 V x 7.95 = 48 V), and the datasheet uses '0 Ω' literally elsewhere "
+                "(R_DLY, R_OSC). The 1.8 M (3.29 uA into 25 k, 82 mV, 0.65 V at the output) cancels about the 0.7 V: "
+                "the condition means the resistor not fitted",
+                "read the condition as R_OFFSET not fitted; expect about 0.7 V of output offset (175 mA into 4 ohm) "
+                "until the 1.8 M is in place"),
     TextErratum("lm4651-t-theta-ja", f"{NAME}, thermal resistances vs note 3",
                 "the LM4651's junction-to-ambient resistance is 52 K/W (thermal table) and 62 K/W (note 3)",
                 "the thermal table lists 'LM4651 N Package theta_JA 52 C/W'; note 3 derates the LM4651 'based on "
