@@ -1,69 +1,11 @@
-"""An exact reference for the op-amp current limiter's design, over the full series, sharing no code with
-handbook.design.limiter (it reads the spec's defaults and the E-series values only).
-
-``exact_limiter(spec)`` returns (R7, (R9, R10, R11, R12, R13), worst margin) for the smallest feasible R7 of
-the spec and, with that R7, the largest worst margin min(I_lo/i_no_trip - 1, 1 - I_hi/i_must_trip) of any
-network, or None when no network meets the spec with any R7 of its range. Feasible means what
-tests/oracles.py:enumerate_limiter means, with the same slack (1e-12): every corner's trip current inside
-[i_no_trip (1 + min_margin), i_must_trip (1 - min_margin)], both inputs ``input_headroom`` below the zener
-node, the dividers drawing at most ``divider_current_max``.
-
-Method: branch and bound over boxes of series indices, with bounds that are valid for every network of a box
-and exact on a box of one network; nothing is sampled and no local solver is used, so the answer is the true
-optimum (up to the floating-point rounding of the figures themselves, ~1e-15 relative).
-
-1. R9 and R10 enter only through their sum. Every corner figure is monotone in S = R9 + R10 (point 3), so
-   its extremes over the tolerance corners of R9 and R10 are at S0 (1 - t) and S0 (1 + t), S0 the nominal
-   sum: the corners where R9 and R10 go opposite ways lie in between. A network is (S0, R11, R12, R13) with
-   S0 from the sorted distinct sums of the two series.
-
-2. The node equations, with q = 1 + R12/R13 (= 1/a, a = R13/(R12 + R13)) and R12||R13 / a = R12:
-       M   = V_D1 R11/(S + R11) + I_m S||R11 = R11 (V_D1 + I_m S)/(S + R11)          (minus input - Z)
-       V_cs = V_D1 - (M + V_os) q + I_p R12                                          (trip voltage at R7)
-       headroom, minus input: V_D1 - M = S (V_D1 - I_m R11)/(S + R11)
-       headroom, plus input:  V_D1 (1 - a) - I_p R12||R13 = R12 (V_D1 - I_p R13)/(R12 + R13)
-       divider current: V_D1/(S + R11) + V_D1/(R12 + R13)
-   Trip currents are V_cs / R7_actual, so (I_lo, I_hi) at R7 are (V_lo, V_hi)/R7 (the oracle's
-   limiter_corners(1, ...) divided by R7): the feasible R7 of a network are an interval.
-
-3. Monotonicity on every axis-parallel line (each variable alone, the others fixed), for every corner
-   (V_D1 > 0, (I_p, I_m) a bias vertex, V_os = +-offset):
-       dM/dS   = R11 (I_m R11 - V_D1)/(S + R11)^2 : the sign of (I_m R11 - V_D1) does not depend on S;
-       dM/dR11 = S (V_D1 + I_m S)/(S + R11)^2    : the sign of (V_D1 + I_m S) does not depend on R11;
-       V_cs at a fixed M: linear in R12; d/dR13 = (M + V_os) R12/R13^2, sign independent of R13;
-       V_cs decreases in M (q > 0);
-       minus headroom: d/dS ~ R11 (V_D1 - I_m R11), d/dR11 ~ -S (I_m S + V_D1): signs free of the variable;
-       plus headroom: d/dR12 ~ R13 (V_D1 - I_p R13), d/dR13 ~ -R12 (I_p R12 + V_D1): likewise;
-       divider current decreases in every resistor.
-   A function monotone on every axis-parallel line reaches its max and min over a box at a vertex (move
-   each coordinate in turn to the better end: the value never gets worse). These hold for any spec with
-   positive resistors, 0 <= t < 1 and a positive zener at both ends; ``_problem`` checks those and raises
-   otherwise. Nothing else (no sign of I_m R11 - V_D1 etc.) is assumed.
-
-4. Bounds over a box B of nominal values (sigma: a tolerance sign vector, x * (1 + t sigma) its corner):
-   the network's V_lo = min over corner, sigma of V_cs. For each fixed sigma, x -> f(x (1 + t sigma)) is
-   still monotone on axis lines, so max over x in B of f(x (1 + t sigma)) is at a vertex of B, and
-       max_{x in B} V_lo(x) <= min_{corner, sigma} max_{vertices v} V_cs(v (1 + t sigma)),
-   which is exact when B is one network (its vertices coincide). The minus side enters V_cs only through
-   M, and V_cs falls with M, so the plus side is bounded with M at its own box bound (max_sigma min_v M for
-   V_lo, min_sigma max_v M for V_hi): still valid, still exact on one network. Likewise V_hi from below,
-   either input's headroom from above, the divider current from below (all resistors at the box's top).
-
-5. Search: phase 1 finds the smallest R7 (a box is dropped when no series R7 below the best found fits its
-   bounds: R7 >= V_hi/(i_must (1 - m)(1 - t7)) and R7 <= V_lo/(i_no (1 + m)(1 + t7)), or its headroom or
-   current bound fails); phase 2, at that R7, the largest worst margin (a box is dropped when its bound
-   is no better than the best network found, or it cannot be feasible). Boxes are split in two along the
-   dimension of the widest log range; the centre network of every box is evaluated exactly (it is a real
-   network), which provides the incumbents. Box bounds are loosened by 1e-9 relative so that rounding
-   cannot drop a network; single networks are judged with enumerate_limiter's own formula and slack.
-"""
 import numpy as np
 
 from handbook.core import series
 from handbook.design.schema import defaults
 
 _SIGN = np.array([-1.0, 1.0])
-_LOOSE = 1e-9  # relative loosening of the box bounds (a box is never dropped on rounding)
+_LOOSE = 1e-9
+_FIELDS = ("a11", "b11", "sl", "sh", "r1", "r2", "a13", "b13", "pl", "ph", "u1", "u2")
 
 
 class _Problem:
@@ -76,68 +18,194 @@ def _problem(spec):
     p.s = s
     values = {n: ([float(s[n])] if s.get(n) is not None else series.values(s[n + "_series"], s[n + "_min"], s[n + "_max"]))
               for n in ("r7", "r9", "r10", "r11", "r12", "r13")}
+    if any(len(v) == 0 for v in values.values()) or min(min(v) for v in values.values()) <= 0:
+        raise ValueError("exact_limiter: an empty range or a resistor not above zero")
     p.r7s = np.array(values["r7"], dtype=float)
-    r9, r10 = np.meshgrid(np.array(values["r9"], dtype=float), np.array(values["r10"], dtype=float), indexing="ij")
-    sums, first = np.unique((r9 + r10).ravel(), return_index=True)
-    p.pairs = (r9.ravel()[first], r10.ravel()[first])  # one (R9, R10) for every distinct sum
-    p.vals = [sums, np.array(values["r11"], float), np.array(values["r12"], float), np.array(values["r13"], float)]
+    r9, r10 = np.meshgrid(np.array(values["r9"], float), np.array(values["r10"], float), indexing="ij")
+    p.sums, first = np.unique((r9 + r10).ravel(), return_index=True)
+    p.pairs = (r9.ravel()[first], r10.ravel()[first])
+    p.r11, p.r12, p.r13 = (np.array(values[n], float) for n in ("r11", "r12", "r13"))
     p.t, p.t7 = float(s["resistor_tolerance"]), float(s["r7_tolerance"])
     vz0 = float(s["zener_voltage"])
     dz = vz0 * s["zener_tolerance"] + s["zener_tc"] * s["temp_span"]
-    p.vz = np.array([vz0 - dz, vz0 + dz])
+    p.vz0, p.vz = vz0, np.array([vz0 - dz, vz0 + dz])
     ib, ios = float(s["input_bias"]), float(s["input_offset_current"])
-    vert = [(avg + d / 2, avg - d / 2) for avg in (-ib, ib) for d in (-ios, ios)]  # the datasheet parallelogram
-    p.ip = np.array([v[0] for v in vert])
-    p.im = np.array([v[1] for v in vert])
+    vert = [(avg + d / 2, avg - d / 2) for avg in (-ib, ib) for d in (-ios, ios)]
+    p.ip, p.im = np.array([v[0] for v in vert]), np.array([v[1] for v in vert])
+    p.imax = abs(ib) + abs(ios) / 2
     p.vos = np.array([-float(s["offset"]), float(s["offset"])])
     p.i_no, p.i_must, p.m = float(s["i_no_trip"]), float(s["i_must_trip"]), float(s["min_margin"])
     p.head, p.dmax = float(s["input_headroom"]), float(s["divider_current_max"])
-    # the preconditions of the monotonicity claims (module docstring, point 3)
-    if not (p.vz[0] > 0 and 0 <= p.t < 1 and 0 <= p.t7 < 1 and 1 - p.m > 0 and p.i_no > 0 and p.i_must > 0):
+    if not (p.vz[0] > 0 and 0 <= p.t < 1 and 0 <= p.t7 < 1 and p.m < 1 and p.i_no > 0 and p.i_must > 0):
         raise ValueError("exact_limiter: a precondition of its bounds fails (zener, tolerances or margin)")
-    if any(len(v) == 0 for v in p.vals) or len(p.r7s) == 0 or min(v.min() for v in p.vals) <= 0 or p.r7s.min() <= 0:
-        raise ValueError("exact_limiter: an empty range or a resistor not above zero")
     return p
 
 
-def _figures(p, lo, hi):
-    """For boxes of indices lo..hi (N x 4: S0, R11, R12, R13): an upper bound on V_lo, a lower bound on V_hi
-    (trip voltages at R7 = 1 ohm nominal), an upper bound on the headroom, a lower bound on the divider
-    current, over every network of the box; exact for a box of one network (module docstring, point 4)."""
-    t = p.t
-    ends = [np.stack([v[lo[:, d]], v[hi[:, d]]], 1)[:, :, None] * (1 + t * _SIGN) for d, v in enumerate(p.vals)]
-    sa, r11a, r12a, r13a = ends  # each (N, end, sign)
-    n = len(lo)
-    vz = p.vz.reshape(2, 1)
-    # minus side: axes (N, end S, end R11, sign S, sign R11, vz, vertex)
-    S = sa[:, :, None, :, None, None, None]
-    R = r11a[:, None, :, None, :, None, None]
-    im = p.im.reshape(1, 1, 1, 1, 1, 1, 4)
-    vzm = vz.reshape(1, 1, 1, 1, 1, 2, 1)
-    M = (R * (vzm + im * S) / (S + R)).reshape(n, 4, 4, 8)  # (N, vertex of the box, sign, corner)
-    m_hi_lb = M.min(axis=1).max(axis=1)  # (N, 8): <= the largest M of every network in the box
-    m_lo_ub = M.max(axis=1).min(axis=1)  # (N, 8): >= the smallest M of every network
-    head_m = (S * (vzm - im * R) / (S + R)).reshape(n, 4, 4 * 8).max(axis=1).min(axis=1)
-    # plus side: axes (N, end R12, end R13, sign R12, sign R13, vz x vertex = 8, vos)
-    A = r12a[:, :, None, :, None, None, None]
-    B = r13a[:, None, :, None, :, None, None]
+def _figures(p, Sv, Rv, Av, Bv):
+    """Bounds over boxes given by their vertices (N x 4 each: S, R11 of the minus side's four vertices, R12,
+    R13 of the plus side's): (V_lo upper, V_hi lower, headroom upper, divider current lower)."""
+    t, n = p.t, len(Sv)
+    sg = 1 + t * _SIGN
+    # minus side: (N, vertex, sign S, sign R11, vz, bias vertex)
+    S = Sv[:, :, None, None, None, None] * sg[:, None, None, None]
+    R = Rv[:, :, None, None, None, None] * sg[:, None, None]
+    vz = p.vz[:, None]
+    M = (R * (vz + p.im * S) / (S + R)).reshape(n, 4, 4, 8)
+    m_hi_lb = M.min(axis=1).max(axis=1)  # (N, 8) <= every network's largest M
+    m_lo_ub = M.max(axis=1).min(axis=1)  # (N, 8) >= every network's smallest M
+    head_m = (S * (vz - p.im * R) / (S + R)).reshape(n, 4, 32).max(axis=1).min(axis=1)
+    # plus side: (N, vertex, sign R12, sign R13, vz x bias vertex, vos)
+    A = Av[:, :, None, None, None, None] * sg[:, None, None, None]
+    B = Bv[:, :, None, None, None, None] * sg[:, None, None]
+    vz8 = np.repeat(p.vz, 4)[:, None]
+    ip8 = np.tile(p.ip, 2)[:, None]
     q = 1 + A / B
-    ip8 = np.tile(p.ip, 2).reshape(1, 1, 1, 1, 1, 8, 1)
-    vz8 = np.repeat(p.vz, 4).reshape(1, 1, 1, 1, 1, 8, 1)
-    vos = p.vos.reshape(1, 1, 1, 1, 1, 1, 2)
     base = vz8 + ip8 * A
-    v_lo_ub = (base - (m_hi_lb[:, None, None, None, None, :, None] + vos) * q).reshape(n, 4, 4 * 16)
-    v_lo_ub = v_lo_ub.max(axis=1).min(axis=1)
-    v_hi_lb = (base - (m_lo_ub[:, None, None, None, None, :, None] + vos) * q).reshape(n, 4, 4 * 16)
-    v_hi_lb = v_hi_lb.min(axis=1).max(axis=1)
-    head_p = (A * (vz8 - ip8 * B) / (A + B)).reshape(n, 4, 4 * 8).max(axis=1).min(axis=1)
-    top = [v[hi[:, d]] for d, v in enumerate(p.vals)]
-    i_div = p.vz[1] / ((top[0] + top[1]) * (1 - t)) + p.vz[1] / ((top[2] + top[3]) * (1 - t))
-    return v_lo_ub, v_hi_lb, np.minimum(head_m, head_p), i_div
+    v_lo = (base - (m_hi_lb[:, None, None, None, :, None] + p.vos) * q).reshape(n, 4, 64).max(axis=1).min(axis=1)
+    v_hi = (base - (m_lo_ub[:, None, None, None, :, None] + p.vos) * q).reshape(n, 4, 64).min(axis=1).max(axis=1)
+    head_p = (A * (vz8 - ip8 * B) / (A + B))[..., 0].reshape(n, 4, 32).max(axis=1).min(axis=1)
+    i_div = (p.vz[1] / ((Sv + Rv) * (1 - t))).min(axis=1) + (p.vz[1] / ((Av + Bv) * (1 - t))).min(axis=1)
+    return v_lo, v_hi, np.minimum(head_m, head_p), i_div
+
+
+class _Boxes(dict):
+    def take(self, sel):
+        return _Boxes({k: v[sel] for k, v in self.items()})
+
+    def __len__(self):
+        return len(self["a11"])
+
+    @staticmethod
+    def cat(parts):
+        return _Boxes({k: np.concatenate([b[k] for b in parts]) for k in _FIELDS})
+
+
+def _index_ranges(b, p):
+    """Single-R11 (single-R13) boxes: the indices of the sums (R12) their ratio range holds, sums in
+    [fl(r1 R11), fl(r2 R11)] (the membership rule, monotone in r, so that splits lose nothing); the ratio
+    range shrunk to what they hold. Returns the boxes without the empty ones."""
+    keep = np.ones(len(b), bool)
+    for a, z, lo, hi, r1, r2, mag, vals in (("a11", "b11", "sl", "sh", "r1", "r2", p.r11, p.sums),
+                                            ("a13", "b13", "pl", "ph", "u1", "u2", p.r13, p.r12)):
+        new = (b[a] == b[z]) & (b[lo] < 0)
+        if new.any():
+            R = mag[b[a][new]]
+            i = np.searchsorted(vals, b[r1][new] * R, "left")
+            j = np.searchsorted(vals, b[r2][new] * R, "right") - 1
+            b[lo][new], b[hi][new] = i, j
+            keep[np.flatnonzero(new)[i > j]] = False
+        single = (b[a] == b[z]) & (b[lo] >= 0) & (b[lo] <= b[hi])
+        R = mag[b[a][single]]
+        b[r1][single] = vals[b[lo][single]] / R
+        b[r2][single] = vals[b[hi][single]] / R
+    return b.take(keep)
+
+
+def _vertices(b, p):
+    single_m = b["a11"] == b["b11"]
+    Ra, Rb = p.r11[b["a11"]], p.r11[b["b11"]]
+    Sv = np.stack([b["r1"] * Ra, b["r1"] * Rb, b["r2"] * Ra, b["r2"] * Rb], 1)
+    Rv = np.stack([Ra, Rb, Ra, Rb], 1)
+    sl, sh = np.maximum(b["sl"], 0), np.maximum(b["sh"], 0)
+    Sv = np.where(single_m[:, None], np.stack([p.sums[sl], p.sums[sl], p.sums[sh], p.sums[sh]], 1), Sv)
+    single_p = b["a13"] == b["b13"]
+    Ta, Tb = p.r13[b["a13"]], p.r13[b["b13"]]
+    Av = np.stack([b["u1"] * Ta, b["u1"] * Tb, b["u2"] * Ta, b["u2"] * Tb], 1)
+    Bv = np.stack([Ta, Tb, Ta, Tb], 1)
+    pl, ph = np.maximum(b["pl"], 0), np.maximum(b["ph"], 0)
+    Av = np.where(single_p[:, None], np.stack([p.r12[pl], p.r12[pl], p.r12[ph], p.r12[ph]], 1), Av)
+    return Sv, Rv, Av, Bv
+
+
+def _probe(b, p):
+    """A real network in each box (its indices: sum, R11, R12, R13) and whether there is one."""
+    out, ok = [], np.ones(len(b), bool)
+    for a, z, lo, hi, r1, r2, mag, vals in (("a11", "b11", "sl", "sh", "r1", "r2", p.r11, p.sums),
+                                            ("a13", "b13", "pl", "ph", "u1", "u2", p.r13, p.r12)):
+        m = (b[a] + b[z]) // 2
+        R = mag[m]
+        single = b[a] == b[z]
+        i = np.where(single, b[lo], np.searchsorted(vals, b[r1] * R, "left"))
+        j = np.where(single, b[hi], np.searchsorted(vals, b[r2] * R, "right") - 1)
+        k = np.clip(np.searchsorted(vals, np.sqrt(b[r1] * b[r2]) * R), i, j)
+        k = np.where(single, (i + j) // 2, k)
+        ok &= i <= j
+        out += [np.clip(k, 0, len(vals) - 1), m]
+    return np.stack(out, 1), ok
+
+
+def _probe_figures(p, idx):
+    S, R, A, B = p.sums[idx[:, 0]], p.r11[idx[:, 1]], p.r12[idx[:, 2]], p.r13[idx[:, 3]]
+    rep = lambda x: np.repeat(x[:, None], 4, 1)  # noqa: E731
+    return _figures(p, rep(S), rep(R), rep(A), rep(B))
+
+
+def _effects(b, p):
+    """How much each dimension (minus ratio, R11, plus ratio, R13) moves the nominal figures across the box."""
+    c = [np.sqrt(b["r1"] * b["r2"]), np.sqrt(p.r11[b["a11"]] * p.r11[b["b11"]]), np.sqrt(b["u1"] * b["u2"]),
+         np.sqrt(p.r13[b["a13"]] * p.r13[b["b13"]])]
+    ends = [(b["r1"], b["r2"]), (p.r11[b["a11"]], p.r11[b["b11"]]), (b["u1"], b["u2"]), (p.r13[b["a13"]], p.r13[b["b13"]])]
+    vz, i = p.vz0, p.imax
+
+    def nominal(rho, R, u, T):
+        M = (vz + i * rho * R) / (1 + rho)
+        return (vz - M * (1 + u) + i * u * T, rho * (vz - i * R) / (1 + rho), u * (vz - i * T) / (1 + u),
+                vz / (R * (1 + rho)) + vz / (T * (1 + u)))
+
+    v0 = nominal(*c)
+    vs = np.maximum(np.abs(v0[0]), 0.01 * vz)
+    eff = []
+    for d in range(4):
+        x1, x2 = list(c), list(c)
+        x1[d], x2[d] = ends[d]
+        f1, f2 = nominal(*x1), nominal(*x2)
+        eff.append(np.abs(f1[0] - f2[0]) / vs + (np.abs(f1[1] - f2[1]) + np.abs(f1[2] - f2[2])) / max(p.head, 1e-3)
+                   + np.abs(f1[3] - f2[3]) / p.dmax)
+    eff = np.stack(eff, 1)
+    can = np.stack([np.where(b["a11"] == b["b11"], b["sh"] > b["sl"], b["r2"] > b["r1"]), b["b11"] > b["a11"],
+                    np.where(b["a13"] == b["b13"], b["ph"] > b["pl"], b["u2"] > b["u1"]), b["b13"] > b["a13"]], 1)
+    return np.where(can, eff + 1e-300, -1.0), can.any(axis=1)
+
+
+def _split(b, p):
+    eff, _ = _effects(b, p)
+    d = np.argmax(eff, axis=1)
+    kids = []
+    for dim, (a, z, lo, hi, r1, r2) in ((0, ("a11", "b11", "sl", "sh", "r1", "r2")), (2, ("a13", "b13", "pl", "ph", "u1", "u2"))):
+        sel = d == dim
+        if sel.any():
+            x = b.take(sel)
+            single = x[a] == x[z]
+            c1, c2 = x.take(slice(None)), x.take(slice(None))
+            mid_i = (x[lo] + x[hi]) // 2
+            mid_r = np.sqrt(x[r1] * x[r2])
+            c1[hi] = np.where(single, mid_i, x[hi])
+            c2[lo] = np.where(single, mid_i + 1, x[lo])
+            c1[r2] = np.where(single, x[r2], mid_r)
+            c2[r1] = np.where(single, x[r1], mid_r)
+            kids += [c1, c2]
+    for dim, (a, z, lo, hi) in ((1, ("a11", "b11", "sl", "sh")), (3, ("a13", "b13", "pl", "ph"))):
+        sel = d == dim
+        if sel.any():
+            x = b.take(sel)
+            mid = (x[a] + x[z]) // 2
+            c1, c2 = x.take(slice(None)), x.take(slice(None))
+            c1[z], c2[a] = mid, mid + 1
+            kids += [c1, c2]
+    kids = _Boxes.cat(kids)
+    # children of single-ratio-index boxes: their ratio ranges follow their index ranges
+    return _index_ranges(kids, p)
+
+
+def _root(p):
+    b = _Boxes(a11=np.array([0]), b11=np.array([len(p.r11) - 1]), sl=np.array([-1]), sh=np.array([-1]),
+               r1=np.array([p.sums[0] / p.r11[-1] * (1 - 1e-12)]), r2=np.array([p.sums[-1] / p.r11[0] * (1 + 1e-12)]),
+               a13=np.array([0]), b13=np.array([len(p.r13) - 1]), pl=np.array([-1]), ph=np.array([-1]),
+               u1=np.array([p.r12[0] / p.r13[-1] * (1 - 1e-12)]), u2=np.array([p.r12[-1] / p.r13[0] * (1 + 1e-12)]))
+    return _index_ranges(b, p)
 
 
 def _exact_ok(p, v_lo, v_hi, head, i_div, r7):
-    """enumerate_limiter's test, term for term, of single networks at R7 (arrays); (ok, worst margin)."""
     ends = (1 - p.t7, 1 + p.t7)
     lo = np.minimum(v_lo / ends[0], v_lo / ends[1])
     hi = np.maximum(v_hi / ends[0], v_hi / ends[1])
@@ -147,15 +215,12 @@ def _exact_ok(p, v_lo, v_hi, head, i_div, r7):
 
 
 def _smallest_r7(p, fig):
-    """Index of the smallest feasible series R7 of each single network (len(r7s) when none). The high-trip
-    test holds from V_hi/(i_must (1 - m)(1 - t7)) up, the low-trip test up to a limit: the feasible R7 are an
-    interval, and its first series value is within one index of the threshold's (values are > 1e-9 apart)."""
     v_lo, v_hi, head, i_div = fig
     k = len(p.r7s)
     thr = v_hi / (p.i_must * (1 - p.m + 1e-12) * (1 - p.t7))
     j0 = np.searchsorted(p.r7s, thr * (1 - _LOOSE))
     best = np.full(len(v_lo), k)
-    for dj in (1, 0):  # the smaller index wins
+    for dj in (1, 0):
         j = np.minimum(j0 + dj, k - 1)
         ok, _ = _exact_ok(p, v_lo, v_hi, head, i_div, p.r7s[j])
         best = np.where(ok & (j0 + dj < k), j0 + dj, best)
@@ -163,13 +228,11 @@ def _smallest_r7(p, fig):
 
 
 def _box_feasible(p, fig):
-    """Headroom and divider-current bounds allow a feasible network in the box; V_lo can be positive."""
     v_lo, _, head, i_div = fig
-    return (head >= (p.head - 1e-12) - _LOOSE * abs(p.head)) & (i_div <= p.dmax * (1 + 1e-12) * (1 + _LOOSE)) & (v_lo > 0)
+    return (head >= (p.head - 1e-12) - _LOOSE * (1 + abs(p.head))) & (i_div <= p.dmax * (1 + 1e-12) * (1 + _LOOSE)) & (v_lo > 0)
 
 
 def _r7_window(p, fig):
-    """Series indices [j_lo, j_hi] of R7 allowed by the bounds of each box (empty when j_lo > j_hi)."""
     v_lo, v_hi = fig[0], fig[1]
     r_lo = v_hi / (p.i_must * (1 - p.m + 1e-12) * (1 - p.t7))
     r_lo = np.where(r_lo > 0, r_lo * (1 - _LOOSE), r_lo * (1 + _LOOSE))
@@ -178,67 +241,46 @@ def _r7_window(p, fig):
 
 
 def _margin_ub(p, fig, r7):
-    """Upper bound of the worst margin of every network of each box at R7 (and whether one can be feasible)."""
     v_lo, v_hi = fig[0], fig[1]
     up = v_lo / ((1 + p.t7) * r7 * p.i_no) - 1
     dn = 1 - v_hi / ((1 - p.t7) * r7 * p.i_must)
-    w = np.minimum(up, dn) + _LOOSE * (1 + np.abs(np.minimum(up, dn)))
+    w = np.minimum(up, dn)
+    w = w + _LOOSE * (1 + np.abs(w))
     return w, _box_feasible(p, fig) & (w >= p.m - 1e-12)
 
 
-def _split(p, lo, hi):
-    """Each box in two along the dimension of the widest log range (only dimensions with > 1 value)."""
-    width = np.stack([np.log(v[hi[:, d]] / v[lo[:, d]]) for d, v in enumerate(p.vals)], 1)
-    width = np.where(hi > lo, width + 1e-300, -1.0)
-    d = np.argmax(width, axis=1)
-    rows = np.arange(len(lo))
-    mid = (lo[rows, d] + hi[rows, d]) // 2
-    lo1, hi1, lo2, hi2 = lo.copy(), hi.copy(), lo.copy(), hi.copy()
-    hi1[rows, d] = mid
-    lo2[rows, d] = mid + 1
-    return np.concatenate([lo1, lo2]), np.concatenate([hi1, hi2])
-
-
-def _search(p, keyfn, probefn, chunk):
-    """Best-first branch and bound. keyfn(lo, hi, fig) -> (key, alive): a lower bound of the objective over
-    the box (smaller is better); probefn(fig of centre networks) -> exact objective of each (inf when
-    infeasible). Returns the best objective (inf when none) and the centre indices that reach it."""
-    best, arg = np.inf, None
-    lo = np.zeros((1, 4), dtype=np.int64)
-    hi = np.array([[len(v) - 1 for v in p.vals]], dtype=np.int64)
-    pool_lo, pool_hi, pool_key = lo[:0], hi[:0], np.zeros(0)
-    boxes = (lo, hi)
+def _search(p, keyfn, probefn, chunk, best=np.inf, arg=None):
+    boxes = _root(p)
+    pool = boxes.take(slice(0, 0))
+    pool_key = np.zeros(0)
     evaluated = 0
     while True:
-        lo, hi = boxes
-        evaluated += len(lo)
-        ctr = (lo + hi) // 2
-        val = probefn(_figures(p, ctr, ctr))
-        j = int(np.argmin(val)) if len(val) else 0
-        if len(val) and val[j] < best:
-            best, arg = float(val[j]), ctr[j].copy()
+        evaluated += len(boxes)
+        idx, has = _probe(boxes, p)
+        val = np.where(has, probefn(_probe_figures(p, idx)), np.inf) if len(boxes) else np.zeros(0)
+        if len(val) and val.min() < best:
+            j = int(np.argmin(val))
+            best, arg = float(val[j]), idx[j].copy()
             keep = pool_key < best
-            pool_lo, pool_hi, pool_key = pool_lo[keep], pool_hi[keep], pool_key[keep]
-        key, alive = keyfn(_figures(p, lo, hi))
-        keep = alive & (key < best) & (hi > lo).any(axis=1)
-        pool_lo = np.concatenate([pool_lo, lo[keep]])
-        pool_hi = np.concatenate([pool_hi, hi[keep]])
+            pool, pool_key = pool.take(keep), pool_key[keep]
+        key, alive = keyfn(_figures(p, *_vertices(boxes, p)))
+        _, can = _effects(boxes, p)
+        keep = alive & (key < best) & can
+        pool = _Boxes.cat([pool, boxes.take(keep)])
         pool_key = np.concatenate([pool_key, key[keep]])
         if not len(pool_key):
             return best, arg, evaluated
         if len(pool_key) > chunk:
             take = np.argpartition(pool_key, chunk)[:chunk]
-            rest = np.ones(len(pool_key), bool)
-            rest[take] = False
         else:
-            take, rest = np.arange(len(pool_key)), np.zeros(len(pool_key), bool)
-        boxes = _split(p, pool_lo[take], pool_hi[take])
-        pool_lo, pool_hi, pool_key = pool_lo[rest], pool_hi[rest], pool_key[rest]
+            take = np.arange(len(pool_key))
+        rest = np.ones(len(pool_key), bool)
+        rest[take] = False
+        boxes = _split(pool.take(take), p)
+        pool, pool_key = pool.take(rest), pool_key[rest]
 
 
 def exact_limiter(spec, chunk=2048, stats=None):
-    """(R7, (R9, R10, R11, R12, R13), worst margin) of the smallest feasible R7 and its best network, or None.
-    ``stats``, a dict, receives the number of boxes each phase evaluated."""
     p = _problem(spec)
     k = len(p.r7s)
 
@@ -269,6 +311,6 @@ def exact_limiter(spec, chunk=2048, stats=None):
     if stats is not None:
         stats["phase2"] = n2
     assert np.isfinite(neg), "phase 2 lost the network phase 1 found"
-    r9, r10 = p.pairs[0][arg[0]], p.pairs[1][arg[0]]
-    net = (float(r9), float(r10), float(p.vals[1][arg[1]]), float(p.vals[2][arg[2]]), float(p.vals[3][arg[3]]))
+    net = (float(p.pairs[0][arg[0]]), float(p.pairs[1][arg[0]]), float(p.r11[arg[1]]), float(p.r12[arg[2]]),
+           float(p.r13[arg[3]]))
     return r7, net, -neg

@@ -41,7 +41,8 @@ PARAMETERS = (
           low=0.0, high=10.0, cite=TDA5144),
     Param(name="min_excursion", default=0.1, unit="V", meaning="smallest CAP-CD swing still safe from noise "
           "(the note gives none)", low=1e-4, high=10.0, cite=ASSUMED),
-    Param(name="cap_tolerance", default=0.05, unit="1", meaning="capacitor tolerance", low=0.0, high=0.5),
+    Param(name="cap_tolerance", default=0.05, unit="1", meaning="capacitor tolerance (the note states none)", low=0.0,
+          high=0.5, cite=ASSUMED),
     Param(name="cap_series", default="E12", unit="", meaning="series CAP-CD is picked from", choices=SERIES),
     # 2.1.3 watchdog
     Param(name="i_wd", default=5e-6, unit="A", meaning="watchdog charge current (0.3 V to 2.2 V)",
