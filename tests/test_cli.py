@@ -22,7 +22,8 @@ def test_examples_json():
         assert {"id", "source", "quantity", "unit", "printed", "computed", "status"} <= set(r)
         assert isinstance(r["printed"], float) and isinstance(r["computed"], float)
         assert r["unit"] in SI_UNITS
-        assert r["status"] in {"exact", "rounding", "bound met", "conservative", "misprint", "inconsistent", "wrong method"}
+        assert r["status"] in {"exact", "rounding", "truncated", "rounded intermediate", "bound met", "conservative",
+                               "misprint", "inconsistent", "wrong method"}
     by_id = {r["id"]: r for r in rows}
     assert by_id["an94002-capcd-bound"]["printed"] == 1.48e-8  # 0.0148 uF in farads
     assert by_id["an94002-offset-tol"]["printed"] == 0.12  # a percentage as a fraction
@@ -35,7 +36,7 @@ def test_equations_json_and_tables():
     assert {r["id"] for r in rows if not r["agrees"]} == {"an94002-eq6", "an94002-eq9b", "an94002-eq11-num",
                                                           "an93008-eq2", "tda5341-capcdm", "tda5341-max-delay",
                                                           "lm4651-eq3", "lm4651-eq4", "lm4651-eq5", "lm4651-eq6",
-                                                          "lm4651-eq8", "lm4651-eq9"}
+                                                          "lm4651-eq8", "lm4651-eq9", "lm4651-eq12"}
     # the LM4651's internal circuits are not shown: those equations are empirical, checked against its tables
     assert {r["id"] for r in rows if r.get("empirical")} >= {f"lm4651-eq{k}" for k in (1, 2, 3, 4, 5, 6, 9)}
     text = run("examples")
@@ -67,6 +68,8 @@ def test_examples_fit_the_terminal_in_the_printed_unit_and_filter():
 
 
 def test_equations_filter_by_status():
+    rows = {r["id"]: r for r in json.loads(run("equations", "--json"))}
+    assert rows["an94002-eq6"]["check"] == "agrees (constant rounded)" and rows["an94002-eq6"]["agrees"] is False
     text = _run_cols(100, "equations", "--status", "differs")
     assert "lm4651-eq8" in text and "an94002-eq13 " not in text
     assert all(len(line) <= 100 for line in text.splitlines())
@@ -124,7 +127,8 @@ def test_errata_source_wraps_instead_of_being_cut():
 
 
 @pytest.mark.parametrize("command, valid", [
-    ("examples", ["exact", "rounding", "bound met", "conservative", "misprint", "inconsistent", "wrong method"]),
+    ("examples", ["exact", "rounding", "truncated", "rounded intermediate", "bound met", "conservative", "misprint",
+                  "inconsistent", "wrong method"]),
     ("equations", ["agrees", "differs", "empirical"]),
     ("errata", ["misprint", "inconsistent", "wrong method", "equation", "text"]),
 ])

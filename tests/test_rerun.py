@@ -10,6 +10,7 @@ note's board makes true must not appear in any re-run's rendered page (prose and
 """
 from __future__ import annotations
 
+import atexit
 import json
 import re
 from pathlib import Path
@@ -62,10 +63,38 @@ NOTE_ONLY = {
 
 ROLE = re.compile(r"\{glue(?::(text|md))?\}`([^`:]+)(?::([^`]*))?`")
 _runs: dict[str, Path] = {}
+_kernel: list = []  # one kernel per test process, shared by its re-runs (see rerun)
+
+
+def _shared_kernel():
+    """A kernel this process starts once and every re-run reuses: starting one and importing the handbook,
+    sympy and matplotlib into it costs about 3 s, as much as most chapters take to run."""
+    if not _kernel:
+        from jupyter_client.manager import KernelManager
+
+        km = KernelManager(kernel_name="python3")
+        km.start_kernel()
+        atexit.register(km.shutdown_kernel, now=True)
+        _kernel.append(km)
+    return _kernel[0]
+
+
+def _fresh(km, cwd: Path) -> None:
+    """Clear the kernel's namespace (``%reset -f``: no name of the last chapter survives; imported modules stay
+    loaded, unchanged) and move it to the chapter's folder, as a new kernel started there would be."""
+    kc = km.blocking_client()
+    kc.start_channels()
+    try:
+        kc.wait_for_ready(timeout=60)
+        reply = kc.execute_interactive(f"%reset -f\nimport os as _os\n_os.chdir({str(cwd)!r})\ndel _os", timeout=60)
+        assert reply["content"]["status"] == "ok", reply["content"]
+    finally:
+        kc.stop_channels()
 
 
 def rerun(chapter: str, tmp_path_factory) -> Path:
-    """The chapter executed with RERUNS[chapter] (once per test session)."""
+    """The chapter executed with RERUNS[chapter] (once per test session), in this process's shared kernel,
+    cleared first."""
     if chapter not in _runs:
         tmp = tmp_path_factory.mktemp(chapter.replace("/", "_"))
         params = dict(RERUNS[chapter])
@@ -73,8 +102,10 @@ def rerun(chapter: str, tmp_path_factory) -> Path:
             (tmp / "fan.toml").write_text(FAN)
             params["spec_file"] = str(tmp / "fan.toml")
         out = tmp / "out.ipynb"
+        km = _shared_kernel()
+        _fresh(km, (BOOK / chapter).parent)
         pm.execute_notebook(str(BOOK / f"{chapter}.ipynb"), str(out), parameters=params, kernel_name="python3",
-                            cwd=str((BOOK / chapter).parent), progress_bar=False)
+                            progress_bar=False, km=km)
         _runs[chapter] = out
     return _runs[chapter]
 

@@ -85,7 +85,9 @@ def cmd_equations(args) -> int:
     if args.json:
         keys = ("id", "source", "title", "printed_latex", "derived_latex", "agrees", "rounded_constants", "dimensions_ok",
                 "law", "note", "empirical", "fitted_to")
-        print(json.dumps([{k: r[k] for k in keys} for r in rows], indent=1))
+        # "check" is the text's check column ("agrees (constant rounded)" where only rounded constants differ;
+        # "agrees" stays the strict symbolic verdict)
+        print(json.dumps([{**{k: r[k] for k in keys}, "check": _equation_check(r)} for r in rows], indent=1))
         return 0
     table = [[r["id"], r["source"], _equation_check(r), "ok" if r["dimensions_ok"] else "ERROR",
               r["note"] or r["title"]] for r in rows]
@@ -284,7 +286,8 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m handbook", description=__doc__.split(":", 1)[1].strip())
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("examples", help="every printed number: printed, recomputed (in the printed unit), status")
-    _filters(p, "exact, rounding, 'bound met', conservative, misprint, inconsistent, 'wrong method', n/a")
+    _filters(p, "exact, rounding, truncated, 'rounded intermediate', 'bound met', conservative, misprint, inconsistent, "
+             "'wrong method', n/a")
     p.set_defaults(func=cmd_examples)
     p = sub.add_parser("equations", help="every equation: printed and derived forms, agreement")
     _filters(p, "agrees, differs (derived equations), empirical (fitted to a datasheet's figures)")

@@ -179,7 +179,7 @@ def test_evaluate_compares_only_where_the_inputs_read_are_the_notes():
 def test_evaluate_reads_via_rounded_too():
     c = claim("3.1", compute=lambda p: 3.2, via_rounded=lambda p: p["vin"] / 4 + 0.06)  # 3.06: within 0.05 of 3.1
     out = c.evaluate(NOTE, NOTE)
-    assert out["status"] == "rounding" and out["depends"] == ["vin"]
+    assert out["status"] == "rounded intermediate" and out["depends"] == ["vin"]  # 3.2 itself is not 3.1
     assert c.evaluate(NOTE | {"vin": 12.5}, NOTE)["status"] == "n/a"
 
 
@@ -200,14 +200,15 @@ def test_a_wrong_method_is_its_own_status_even_when_the_arithmetic_holds():
 def test_a_truncated_last_digit():
     t = dict(truncated=True, reason="last digit truncated")
     assert claim("22.7", compute=lambda p: 22.755).evaluate(NOTE, NOTE)["status"] == "misprint"  # 0.055 off
-    assert claim("22.7", compute=lambda p: 22.755, **t).evaluate(NOTE, NOTE)["status"] == "rounding"
-    assert claim("22.7", compute=lambda p: 22.799, **t).evaluate(NOTE, NOTE)["status"] == "rounding"
+    assert claim("22.7", compute=lambda p: 22.755, **t).evaluate(NOTE, NOTE)["status"] == "truncated"
+    assert claim("22.7", compute=lambda p: 22.799, **t).evaluate(NOTE, NOTE)["status"] == "truncated"
+    assert claim("22.7", compute=lambda p: 22.74, **t).evaluate(NOTE, NOTE)["status"] == "rounding"  # rounds anyway
     assert claim("22.7", compute=lambda p: 22.8001, **t).evaluate(NOTE, NOTE)["status"] == "misprint"  # cut: 22.8
-    assert claim("-22.7", compute=lambda p: -22.755, **t).evaluate(NOTE, NOTE)["status"] == "rounding"
+    assert claim("-22.7", compute=lambda p: -22.755, **t).evaluate(NOTE, NOTE)["status"] == "truncated"
     assert claim("6.35", compute=lambda p: 6.366, **t).evaluate(NOTE, NOTE)["status"] == "misprint"  # cut: 6.36
-    assert claim("11.7", compute=lambda p: 11.76, basis="datasheet", **t).evaluate(NOTE, NOTE)["status"] == "rounding"
+    assert claim("11.7", compute=lambda p: 11.76, basis="datasheet", **t).evaluate(NOTE, NOTE)["status"] == "truncated"
     via = claim("22.7", compute=lambda p: 30.0, via_rounded=lambda p: 22.78, **t)
-    assert via.evaluate(NOTE, NOTE)["status"] == "rounding"
+    assert via.evaluate(NOTE, NOTE)["status"] == "truncated"
     with pytest.raises(ValueError, match="c1: a claim marked truncated=True must say 'truncated'"):
         claim(truncated=True, reason="cut off")
 
@@ -258,8 +259,8 @@ def test_recorder_spread_reads_every_key():
 
 @pytest.mark.parametrize("computed, safe_side, status", [
     (0.01455, "above", "conservative"),  # the note's CAP-CD bound: 0.0148 from the constant 160, 0.01455 exact
-    (0.01455, "", "rounding"),  # no safe side declared: the rounded intermediate explains it, nothing more
-    (0.01505, "above", "rounding"),  # the print below the exact value is not the safe side of a lower bound
+    (0.01455, "", "rounded intermediate"),  # no safe side declared: the rounded intermediate explains it, nothing more
+    (0.01505, "above", "rounded intermediate"),  # the print below the exact value is not the safe side of a lower bound
     (0.01479, "above", "rounding"),  # the exact value itself rounds to the print: plain rounding
 ])
 def test_a_rounded_intermediate_that_moves_a_bound_to_the_safe_side_is_conservative(computed, safe_side, status):

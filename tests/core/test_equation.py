@@ -76,7 +76,7 @@ def test_a_truncated_last_digit_is_rounding_only_where_the_print_is_the_truncati
                      reason="22.755 truncated to 22.7", chapter="c", **kw)
 
     assert claim("22.7", 22.755).evaluate({}, {})["status"] == "misprint"
-    assert claim("22.7", 22.755, truncated=True).evaluate({}, {})["status"] == "rounding"
+    assert claim("22.7", 22.755, truncated=True).evaluate({}, {})["status"] == "truncated"
     assert claim("22.8", 22.755, truncated=True).evaluate({}, {})["status"] == "rounding"  # rounded anyway
     # 6.366 truncates to 6.36, not 6.35; 22.755 never truncates to 22.6: still misprints
     assert claim("6.35", 6.366, truncated=True).evaluate({}, {})["status"] == "misprint"

@@ -43,11 +43,13 @@ def test_statuses():
     assert {r["id"] for r in rows if r["status"] == "wrong method"} == WRONG
     assert {r["id"] for r in rows if r["status"] == "inconsistent"} == INCONSISTENT
     assert {r["id"] for r in rows if r["status"] == "bound met"} == BOUNDS_MET
-    assert all(r["status"] in ("exact", "rounding") for r in rows
+    assert all(r["status"] in ("exact", "rounding", "truncated", "rounded intermediate") for r in rows
                if r["id"] not in MISPRINTS | WRONG | INCONSISTENT | BOUNDS_MET)
     assert all(r["consequence"] for r in rows if r["id"] in INCONSISTENT)
     # R10 = 7.87 k follows from the rounded A = 0.815, not from the exact 0.81481
-    assert {r["id"]: r["status"] for r in rows}["an93008-r10"] == "rounding"
+    assert {r["id"]: r["status"] for r in rows}["an93008-r10"] == "rounded intermediate"
+    # 155 mV printed 150 and 7.79 V printed 7.7: cut off, not rounded by either rule
+    assert {r["id"] for r in rows if r["status"] == "truncated"} == {"an93008-vz-min", "an93008-zener-drift"}
 
 
 def test_supply_referenced_worst_case_by_hand():
@@ -105,7 +107,7 @@ def test_errata_by_source_document_and_as_book_entries():
 def test_the_7v7_zener_minimum_is_a_truncation_not_a_misprint_and_the_ground_erratum():
     rows = {r["id"]: r for r in an93008.evaluate()}
     # "0.95 x 8.2 = 7.7 V": the product is 7.79 V, cut (not rounded) to one decimal; the book's status says so
-    assert rows["an93008-vz-min"]["status"] == "rounding" and rows["an93008-vz-min"]["computed"] == pytest.approx(7.79)
+    assert rows["an93008-vz-min"]["status"] == "truncated" and rows["an93008-vz-min"]["computed"] == pytest.approx(7.79)
     assert "truncated" in rows["an93008-vz-min"]["reason"]
     assert "an93008-vz-min" not in {r["id"] for r in catalog.errata("AN93008")}
     text = {e.id: e for e in an93008.SOURCE.errata}["an93008-t-gnd"]

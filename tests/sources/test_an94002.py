@@ -125,8 +125,9 @@ STATUS = {
     "conservative": {"an94002-capcd-bound"},  # a lower bound printed 1.7 % high, through the constant 160
     "rounding": {"an94002-fosc", "an94002-capst", "an94002-eq6-constant",
                  "an94002-eq9-constant", "an94002-factor-a", "an94002-a-vd1", "an94002-level-shift",
-                 "an94002-vcs-at-opamp", "an94002-offset-tol", "an94002-zener-drift", "an94002-zener-drift-pct",
+                 "an94002-vcs-at-opamp", "an94002-offset-tol", "an94002-zener-drift-pct",
                  "an94002-total-tol"},
+    "truncated": {"an94002-zener-drift"},  # 155 mV printed 150: cut off, not rounded by either rule
     "misprint": {"an94002-window-high", "an94002-window-low"},
     "wrong method": {"an94002-resistor-tol", "an94002-total-exact"},  # percentages multiplied, matching assumed
     "inconsistent": {"an94002-capst-datasheet", "an94002-ich-max", "an94002-zener-spread", "an94002-shift-7v7"},

@@ -112,9 +112,10 @@ def _cut_to(value: float, text: str, unit: str) -> bool:
 
 def test_every_status_agrees_with_its_own_numbers():
     """Written here from the printed digits (Decimal), not from the registry's classify: an exact row equals its
-    recomputation, a rounding row's recomputation (or the note's rounded intermediate) rounds to the print by
-    the stated rule or, where the reason says so, is cut to it; a bound met is met; a conservative print sits on
-    its safe side; and no erratum's numbers in fact round to each other."""
+    recomputation, a rounding row's recomputation rounds to the print (half up or half even), a rounded
+    intermediate row's does not but the note's rounded intermediate does, a truncated row's print is its value
+    cut off and not rounded; a bound met is met; a conservative print sits on its safe side; and no erratum's
+    numbers in fact round to each other."""
     checked = 0
     for src in SOURCES:
         p = src.defaults
@@ -126,8 +127,13 @@ def test_every_status_agrees_with_its_own_numbers():
             if status == "exact":
                 assert abs(c.printed.si - computed) <= 1e-9 * max(abs(computed), 1e-300), c.id
             elif status == "rounding":
-                assert any(_rounds_to(v, text, unit, c.printed.sig) for v in values) or (
-                    "truncated" in c.reason and any(_cut_to(v, text, unit) for v in values)), c.id
+                assert _rounds_to(computed, text, unit, c.printed.sig), c.id
+            elif status == "rounded intermediate":
+                assert len(values) == 2 and _rounds_to(values[1], text, unit, c.printed.sig), c.id
+                assert not _rounds_to(computed, text, unit, c.printed.sig), c.id
+            elif status == "truncated":
+                assert "truncated" in c.reason and any(_cut_to(v, text, unit) for v in values), c.id
+                assert not any(_rounds_to(v, text, unit, c.printed.sig) for v in values), c.id
             elif status == "bound met":
                 assert (c.printed.si >= computed * (1 - 1e-12)) if c.relation == ">=" else (
                     c.printed.si <= computed * (1 + 1e-12)), c.id

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from decimal import Decimal
+from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Decimal
 
 #: printed unit names -> (SI scale factor, SI unit name used in the JSON output)
 UNIT_SCALES: dict[str, tuple[float, str]] = {
@@ -152,7 +152,7 @@ class Claim:
     consequence: str = ""  # for a misprint or an inconsistency: what it means for a designer
     safe_side: str = ""  # "below" or "above": the side a designer may round to on purpose (a heat sink's K/W)
     method_wrong: bool = False  # the number follows the note's arithmetic but the method itself is wrong
-    truncated: bool = False  # the last printed digit is cut off, not rounded (22.755 printed 22.7): a rounding matter
+    truncated: bool = False  # the last printed digit is cut off, not rounded (22.755 printed 22.7): status "truncated"
     same_fact: str = ""  # the id of the erratum that carries this fact (listed there as another place, not counted twice)
 
     def __post_init__(self):
@@ -164,24 +164,27 @@ class Claim:
         return UNIT_SCALES[self.printed.unit][1]
 
     def _status(self, computed: float, via: float | None) -> str:
-        """classify, then what a number's arithmetic alone cannot tell: a wrong method, a last digit cut off
-        instead of rounded ("rounding", when the print is exactly the truncated value), and a value rounded
-        to the safe side on purpose ("conservative": within one unit of its last digit, or the print of a rounded
-        intermediate that moved it to the safe side, where the exact value does not round to it)."""
+        """classify, then what a number's arithmetic alone cannot tell: a wrong method; a last digit cut off
+        instead of rounded ("truncated", when the print is exactly the value cut off); a value rounded to the safe
+        side on purpose ("conservative": within one unit of its last digit, or the print of a rounded intermediate
+        that moved it to the safe side, where the exact value does not round to it); and a print that follows from
+        the note's own rounded intermediate but not from the exact value ("rounded intermediate"). "rounding" is
+        kept for a print the exact value itself rounds to."""
         status = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation, basis=self.basis,
                           via_rounded=via)
         if self.method_wrong:
             return "wrong method"
-        if status in ("misprint", "inconsistent") and self.truncated and (
+        if status in ("misprint", "inconsistent", "rounding") and self.truncated and not any(
+                _rounds_to_print(self.printed, v) for v in (computed, via) if v is not None) and (
                 _is_truncation(self.printed, computed) or (via is not None and _is_truncation(self.printed, via))):
-            return "rounding"
+            return "truncated"  # a tie at half a unit (155 printed 150) is a cut, not a rounding, by either rule
         if status in ("misprint", "inconsistent") and self.safe_side and _safe_rounding(self, computed):
             return "conservative"
-        if status == "rounding" and via is not None and self.safe_side:
+        if status == "rounding" and via is not None:
             direct = classify(self.printed.si, self.printed.half_unit, computed, relation=self.relation, basis=self.basis)
-            on_safe_side = (computed > self.printed.si) if self.safe_side == "below" else (self.printed.si > computed)
-            if direct in ("misprint", "inconsistent") and on_safe_side:
-                return "conservative"
+            if direct in ("misprint", "inconsistent"):
+                on_safe_side = (computed > self.printed.si) if self.safe_side == "below" else (self.printed.si > computed)
+                return "conservative" if self.safe_side and on_safe_side else "rounded intermediate"
         return status
 
     def evaluate(self, params: Mapping, defaults: Mapping) -> dict:
@@ -228,6 +231,15 @@ def _is_truncation(printed: Printed, computed: float) -> bool:
         return False
     cut = math.copysign(math.floor(abs(computed) / step + 1e-9) * step, computed)
     return abs(printed.si - cut) <= 1e-9 * max(step, abs(printed.si))
+
+
+def _rounds_to_print(printed: Printed, value: float) -> bool:
+    """``value`` rounded half up or half even at the print's last digit is the print (155 -> 160, so "150" is not)."""
+    step = Decimal(repr(2 * printed.half_unit / UNIT_SCALES[printed.unit][0])).normalize()
+    v = Decimal(repr(value / UNIT_SCALES[printed.unit][0]))
+    exact = Decimal(printed.text)
+    return any(abs((v / step).quantize(Decimal(1), rounding=m) * step - exact) <= step * Decimal("1e-9")
+               for m in (ROUND_HALF_UP, ROUND_HALF_EVEN))
 
 
 def _safe_rounding(claim: Claim, computed: float) -> bool:

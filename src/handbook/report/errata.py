@@ -53,7 +53,7 @@ def errata_md(rows: list[dict]) -> Markdown:
     items = []
     for r in rows:
         nums = _printed_and_recomputed(r)
-        head = (f"**{r['what']}** ({r['source']}; *{ERRATA_KINDS[r['kind']]}*, {r['confidence']})"
+        head = (f"**{r['what']}** (`{r['id']}`; {r['source']}; *{ERRATA_KINDS[r['kind']]}*, {r['confidence']})"
                 + (f": {nums}." if nums else ""))
         lines = [f"- {head}", f"  The source: {_quoted(r['note'], r['quote'])}",
                  f"  Evidence: {_sentence(r['evidence'])}", f"  Read charitably: {_sentence(r['charitable'])}"]

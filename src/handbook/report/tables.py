@@ -10,7 +10,8 @@ from ..core.claim import UNIT_SCALES
 from ..core.units import eng  # noqa: F401 (report.eng, as the chapters call it)
 
 #: status -> short badge used in tables
-BADGE = {"exact": "exact", "rounding": "rounding", "bound met": "bound met",
+BADGE = {"exact": "exact", "rounding": "rounding", "truncated": "truncated (last digit cut off)",
+         "rounded intermediate": "rounding (of a rounded intermediate)", "bound met": "bound met",
          "conservative": "conservative (rounded to the safe side)", "misprint": "**misprint**",
          "inconsistent": "**inconsistent**", "wrong method": "**wrong method**", "n/a": "n/a"}
 

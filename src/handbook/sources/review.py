@@ -75,7 +75,9 @@ ERRATA_REVIEW = Review(date="2026-11-25", scope="the 56 errata registered then, 
     _d("an94002-zener-tc", "false", "removed", "agreed: 6.2 mV/K at 8.2 V is 0.076 %/K, inside a column printed to "
        "one figure (+0.08 %/K holds up to 0.085 %/K). Now 'bound met'"),
     _d("an94002-resistor-tol", "real", "kept", "recomputed: -86 %/+85 % at the corners of 1 % parts"),
-    _d("an94002-total-exact", "real", "kept", "recomputed: -98.8 %/+106 %"),
+    _d("an94002-total-exact", "real", "merged into an94002-resistor-tol", "recomputed (-98.8 %/+106 %), but the same "
+       "fact as the resistor term it follows from; its consequence ('not guaranteed to limit at all') was "
+       "overstated and now gives the range"),
     _d("an94002-eq2", "OCR note", "reading note", "a reconstruction of garbled OCR, not an error of the note"),
     _d("an94002-t-dvcapmin", "real", "tempered", "one name for two quantities holds; the '14 times' rests on the "
        "book's assumed 0.1 V noise floor, which the entry now says"),

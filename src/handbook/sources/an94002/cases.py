@@ -48,19 +48,12 @@ CASES = {
         'Resistors tolerance: $\\pm$ 5 %',
         'R10 O2 5.6 K $\\Omega \\pm 1\\%$ SFR25 2322 181 53562',
         'By choosing R11 = R13 and R10 = R12 for $V_{cs}$ the following applies:',
+        'Total initial tolerance : ± 23 % (1.12 x 1.05 x 1.05)',
     ), confidence='certain',
         charitable="The note asserts +-5 % without derivation and only asks for 'low-tolerance "
                    "resistors'; it may have meant matched pairs. Even so, V_cs = V_D1(1 - B/A) is a "
                    '~1 % difference of two ratios, and independent 1 % parts move it about -86/+85 %:'
                    ' survives.'),
-    'an94002-total-exact': Case(quote=(
-        'Total initial tolerance : ± 23 % (1.12 x 1.05 x 1.05)',
-        '$$V_{CS} = V_{D1} - V_{D1} \\frac{B}{A}$$',
-    ), confidence='certain',
-        charitable='The product 1.12 x 1.05 x 1.05 = 1.235 is computed correctly; the fault is the '
-                   'resistor term (an94002-resistor-tol), whose exact worst case with eq 13 spans '
-                   'about 1.2 to 206 mV. Survives, though it largely follows from the resistor-tol '
-                   'erratum.'),
     'an94002-t-dvcapmin': Case(quote=(
         'With $\\Delta V_{\\text{capmin}} = 2.3 - 0.9 = 1.4 \\text{ V}$',
         'calculated with a minimum allowable voltage excursion ( $\\Delta V_{capmin}$ ) and the '

@@ -218,12 +218,13 @@ def commutation() -> list[Claim]:
                      "constant, 157.14 rounded up to 160; from 22 uA and 1.4 V directly the bound is 0.01455 uF, "
                      "which 0.0148 is 1.7 % above (a larger capacitor than needed, never a smaller one)"),
         Claim(id="an94002-c3", where=f"{NAME} 2.1.2", quantity="C3 = CAP-CD chosen", printed=Printed("18", "nF"),
-              chapter=ch, compute=cap_cd_choice,
+              chapter=ch, compute=cap_cd_choice, basis="note, with this book's 5 % capacitor tolerance",
               reason="the note's choice, recomputed under an assumption of this book: with a 5 % capacitor "
                      "tolerance (the note states none) the smallest E12 value meeting the 14.55 nF bound at its low "
                      "end is 18 nF (15 nF x 0.95 = 14.25 nF falls short); without a tolerance 15 nF would do"),
         Claim(id="an94002-c4", where=f"{NAME} 2.1.2", quantity="C4 = CAP-DC (same timer, same value)",
               printed=Printed("0.018", "uF"), chapter=ch, compute=cap_cd_choice,
+              basis="note, with this book's 5 % capacitor tolerance",
               reason="CAP-DC runs the slave timer with the same currents and window, so C4 = C3"),
         Claim(id="an94002-ich-max", where=f"{NAME} 2.1.2 vs TDA5144 datasheet",
               quantity="largest CAP-CD charge current I_chmax", printed=Printed("22", "uA"), chapter=ch,

@@ -146,7 +146,8 @@ ERRATA = (
                 "...751: a one-digit slip, possibly the OCR's); C6 ...17224 is 220 nF, the code of C5/C7/C8 (printed "
                 "10 nF), but the OCR's code column holds 11 codes for the 10 capacitors, so which code belongs to C6 "
                 "is uncertain. R1 ...53229 is 22 ohm as printed (9 is the decade of 10 to 99 ohm)",
-                "order by value and check the code: a C6 of 220 nF would make the watchdog 22 times longer"),
+                "order by the printed value, which the text confirms (C6 = 10 nF), and check the code on the "
+                "reel: a 220 nF part fitted from the code would make the watchdog 22 times longer"),
     TextErratum("an94002-t-mosfet", f"{NAME} 2.3 vs 2.2 and the parts list",
                 "T2 'decreases the drive for the MOSFET that determines the voltage V_mot', on a board whose series "
                 "regulator is a bipolar transistor",
@@ -154,7 +155,8 @@ ERRATA = (
                 "MOSFET anywhere; the sentence is AN93008's (section 2.1), whose own text allows 'the transistor or "
                 "power MOSFET'",
                 "T2 diverts the BD434's base current (which the OTA sinks), not a gate charge: it conducts milliamps to "
-                "tens of milliamps at the limit, which is why its V_BE sits near the note's 0.8 V"),
+                "tens of milliamps at the limit, so its V_BE is the datasheets' figure at those currents (up to "
+                "0.82 V at 10 mA), not at 2 mA"),
     TextErratum("an94002-t-cadcd", f"{NAME} 2.1.2", "'CAD-CD' and 'CAD-DC' for CAP-CD and CAP-DC",
                 "typographical: the same paragraphs also print CAP-CD and CAP-DC",
                 "none once read as CAP-CD and CAP-DC"),

@@ -34,9 +34,10 @@ CASES = {
     'lm4651-hp-corner': Case(quote=(
         'R_1 and the 1µF capacitor create a high pass filter with a 3dB point at 6.35Hz.',
     ), confidence='certain',
-        charitable='6.35 Hz is 1/(6.3 x 25 k x 1 uF), 2 pi taken as 6.3: rounding, but of an '
-                   'intermediate, and the print is neither the rounded (6.37) nor the truncated '
-                   '(6.36) value. Survives as trivial.'),
+        charitable='6.35 Hz is what 2 pi taken as 6.3 gives (1/(6.3 x 25 k x 1 uF) = 6.349 Hz), an '
+                   'intermediate the datasheet does not print; the book counts a rounded intermediate only '
+                   'where the source prints it, so the print claims a third figure its constant did not '
+                   'have. Survives as a trivial misprint of precision (0.25 %).'),
     'lm4651-isckt': Case(quote=(
         'With R_{SCKT} equal to 100k Ω , the current limit is 10A.',
         '$$I_{SCKT} = 1X10^{5}/(10k\\Omega \\| R_{SCKT})$$',
@@ -63,9 +64,10 @@ CASES = {
     'lm4651-eps0': Case(quote=(
         'where $\\epsilon o = 0.22479 p F/in and \\epsilon r = 4.1$',
     ), confidence='certain',
-        charitable='0.22479 is 8.85e-12 F/m x 0.0254 m/in exactly: a three-figure epsilon_0 printed '
-                   'to five figures. The last two digits claim a precision the constant did not have;'
-                   ' negligible in use (0.05 %).'),
+        charitable='0.22479 is what a three-figure epsilon_0 (8.85e-12 F/m, not printed) gives x 0.0254 '
+                   'm/in; printed to five figures, its last two digits claim a precision the constant '
+                   'did not have. Survives as a trivial misprint of precision (0.05 %), not as a wrong '
+                   'constant.'),
     'lm4651-gain-4k7': Case(quote=(
         "with R₁'s value set to 4.7k Ω and R₂'s value set to 3.5k Ω for a gain 7.5V/V.",
         'reducing gives the equation below: $$R_2 = .7R_1$$ (4)',
@@ -97,8 +99,8 @@ CASES = {
     ), confidence='probable',
         charitable='20 k and 4.7 k are explicit alternatives in the Example, which warns that a lower'
                    ' R1 needs a larger C_IN; the 1 uF is only paired with the 25 k of the DC-offset '
-                   "section and figure 1's C_IN is lost. Only the 25 k is odd, so the '34 Hz' "
-                   'consequence is not shown.'),
+                   "section and figure 1's C_IN is lost. What survives is only the 25 k, which "
+                   'matches neither of the Example\'s values.'),
     'lm4651-t-170w': Case(quote=(
         '170W Class D Audio Power Amplifier Solution',
         '$f_{SW} = 75$ kHz, $R_L = 4\\Omega$, 10% THD 170 W',
@@ -119,7 +121,7 @@ CASES = {
                    "printed twice, so it is no OCR loss. Survives as a grouping slip, the text's 0.1 to 1 uF "
                    "governing; a second reader who defended the source weakened it to this."),
     'lm4651-t-torque': Case(quote=(
-        'The recommended maximum torque applied to the mounting screw is 40 inch-lbs. or 3.',
+        'The recommended maximum torque applied to the mounting screw is 40 inch-lbs. or 3.3 foot-lbs.',
     ), confidence='probable',
         charitable="The two figures agree (40 / 12 = 3.3), so it is no one-digit slip, and no unit (inch-ounces, "
                    "another fastener) fits both; the next sentences tie the screw to warping the package. It rests "

@@ -125,8 +125,8 @@ def build() -> list[Claim]:
               printed=Printed("6.35", "Hz"), compute=lambda p: 1 / (2 * math.pi * R1_OFFSET * C_IN_OFFSET),
               reason="1 / (2 pi x 25 k x 1 uF) = 6.366 Hz: rounded 6.37, truncated 6.36; 6.35 is neither "
                      "(0.25 % low)", chapter=EX,
-              consequence="negligible by itself; but R1 is 25 k here, 20 k in the Example Design and 4.7 k in "
-                          "figure 1 (see lm4651-t-r1)"),
+              consequence="negligible by itself (0.25 %); the 25 k beside it matches neither of the Example "
+                          "Design's R1 values (see lm4651-t-r1)"),
         Claim(id="lm4651-isckt", where=f"{NAME} Example Design", quantity="current limit with R_SCKT = 100 k",
               printed=Printed("10", "A", sig=2), compute=lambda p: i_sckt(p["r_sckt"]),
               reason="1e5 / (10 k || 100 k) = 1e5 / 9.09 k = 11 A", chapter=EX,
@@ -194,7 +194,8 @@ def build() -> list[Claim]:
               basis="system table, I_CQ", chapter=TH,
               reason="the datasheet defines the total quiescent current as |I_VCC+| + |I_VEE-| (LM4651 table), so "
                      "124 mA (the smaller of the row's two values) from +-20 V rails costs 20 V x 124 mA = 2.48 W: "
-                     "at 5 W out the efficiency is at most 5 / 7.48 = 66.8 %, and the printed 55 % is below it"),
+                     "at 5 W out the efficiency is at most 5 / 7.48 = 66.8 %, and the printed 55 % is below it (the row's other "
+                     "value, 237 mA, whose conditions the OCR lost, would bound it at 51 %)"),
         Claim(id="lm4651-l1-rating", where=f"{NAME} recommended components, L1 (CoilCraft PCV-0-473-05, 47 uH, 5 A)",
               quantity="current rating of the recommended 47 uH choke against the Example's rms current",
               printed=Printed("5", "A"), relation=">=", compute=lambda p: (p["p_out"] / p["r_load"]) ** 0.5,

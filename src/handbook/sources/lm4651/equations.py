@@ -1,6 +1,8 @@
 """LM4651/LM4652 equations (3 to 12, and those the text implies): each function returns one record."""
 from __future__ import annotations
 
+import math
+
 import sympy as sp
 from sympy.physics import units as u
 
@@ -271,11 +273,15 @@ def eq12() -> Equation:
         id="lm4651-eq12", source=f"{NAME}, eq (12)", title="Closed-loop gain", lhs=sp.Symbol("G"),
         lhs_unit=sp.Integer(1), printed=(R2 / R1) * ((Rf11 + Rf12) / Rf12) - R2 / R1 + sp.Rational(1, 2),
         units={R1: OHM, R2: OHM, Rf11: OHM, Rf12: OHM}, law=NO_LAW, empirical=True,
-        fitted_to="the Example Design's gain of 7.5 with R2 = 0.7 R1 (its R_f11 = 620 k, R_f12 = 62 k); the internal "
-                  "feedback amplifier is not described well enough to derive the form, so it is not checked against "
-                  "a derivation",
-        table=(_pt("Example Design: 'R2 = .7R1' for '7.5V/V'", r"R_2 = 0.7\,R_1,\ R_{f11} = 620" + _KOHM
-                   + r",\ R_{f12} = 62" + _KOHM, {R1: 20e3, R2: 14e3, Rf11: 620e3, Rf12: 62e3}, "7.5", "1"),),
+        fitted_to="nothing the datasheet shows: the internal feedback amplifier is not described well enough to derive "
+                  "the form, so it is held against the gains the datasheet prints for figure 1's values (the "
+                  "Example's own R2 = 0.7 R1 follows from eq 12 and checks nothing)",
+        table=(_pt("system table, THD+N condition 'A_V = 18 dB' (figure 1: R1 = 4.7 k, R2 = 3.5 k)",
+                   r"R_1 = 4.7" + _KOHM + r",\ R_2 = 3.5" + _KOHM, {R1: 4.7e3, R2: 3.5e3, Rf11: 620e3, Rf12: 62e3},
+                   "18", "1", through=lambda g: 20 * math.log10(g)),
+               _pt("Example Design: 'R1 ... 4.7k and R2 ... 3.5k for a gain 7.5V/V'",
+                   r"R_1 = 4.7" + _KOHM + r",\ R_2 = 3.5" + _KOHM, {R1: 4.7e3, R2: 3.5e3, Rf11: 620e3, Rf12: 62e3},
+                   "7.5", "1")),
         note="Printed intact in the Example Design and the components table; the '(3)' after it is the Example's own "
              "equation label (the next line is 'R2 = .7R1 (4)'), which clashes with eq 3 and eq 4 "
              "(lm4651-t-eq-labels).")

@@ -16,7 +16,8 @@ CASES = {
     ), confidence='probable',
         charitable="kg m2 is meant (AN94002 prints kg.m2, and the example's numbers give the printed "
                    '22.7 Hz with kg m2); the slash appears twice, so it is probably in the original '
-                   'rather than an OCR slip. Survives as trivial.'),
+                   'rather than an OCR slip. (The OCR lost the exponents\' minus signs: 6.34e-7 kg m2 '
+                   'and 4.5e-3 N m/A are meant, which the book reads so.) Survives as trivial.'),
     'tda5144-max-delay': Case(quote=(
         ('datasheet facts', 'C = 6231 / f_C1 (nF), maximum delay 0.076 C ms;'),
         ('datasheet facts', 'CAP-CD datasheet text: charge 8.1 uA, discharge 16.2 uA, range "0.9 to 2.2'

@@ -4,7 +4,7 @@ from __future__ import annotations
 from ...core import Param, ReadingNote, TextErratum
 
 NAME = "TDA5341"
-TDA5144 = "TDA5144 datasheet (datasheet_facts.md)"
+TDA5144 = "TDA5144 datasheet (Philips, June 1994)"
 
 PARAMETERS = (
     Param(name="inertia", default=6.34e-7, unit="kg m^2", meaning="rotor inertia J (printed 'kg/m2')", low=1e-12, high=1.0),
