@@ -25,7 +25,8 @@ def test_statuses():
     rows = tda5341.evaluate()
     assert {r["id"] for r in rows} == set(HAND_5341)
     assert {r["id"] for r in rows if r["status"] == "misprint"} == MISPRINTS
-    assert all(r["status"] in ("exact", "rounding", "truncated", "rounded intermediate") for r in rows if r["id"] not in MISPRINTS)
+    assert all(r["status"] in ("exact", "rounding", "truncated", "rounded intermediate")
+               for r in rows if r["id"] not in MISPRINTS)
     assert all(r["consequence"] for r in rows if r["id"] in MISPRINTS)
     # 22.755 Hz printed 22.7: the last digit cut off, not rounded (22.8): truncated, not a misprint
     fosc = {r["id"]: r for r in rows}["tda5341-fosc"]
