@@ -71,8 +71,7 @@ def reading_notes_md(rows: list[dict]) -> Markdown:
     return Markdown("\n".join(f"- **{r['what']}** ({r['source']}): {_sentence(r['note_text'])}" for r in rows))
 
 
-def review_table(review) -> Markdown:
-    """A review of the errata and what was decided about each id it questioned: the review's verdict, the
-    decision and why."""
-    return table(["id", "review said", "decision", "why"],
-                 [[d.id, d.verdict, d.outcome, d.why] for d in review.decisions])
+def review_table(review, said: str = "review said") -> Markdown:
+    """A review of the errata and what was decided about each id it questioned: the review's verdict (headed
+    ``said``), the decision and why."""
+    return table(["id", said, "decision", "why"], [[d.id, d.verdict, d.outcome, d.why] for d in review.decisions])

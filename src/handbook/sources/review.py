@@ -169,4 +169,77 @@ REREAD = Review(date="2026-11-25", scope="new errata from a sentence-by-sentence
        "which serves either output stage"),
 ))
 
-__all__ = ["ERRATA_REVIEW", "OUTCOMES", "REREAD", "Decision", "Review"]
+#: what the same re-read considered and rejected itself, each with its reason (checked, not worth an accusation)
+REREAD_REJECTED = Review(date="2026-11-25", scope="candidates the re-read rejected before any defence", decisions=(
+    _d('reread-r1', 'LM4651 abs. max \'1.5W\' / \'32W\' (P_D of LM4651 / LM4652) vs Note 3 derating "based on a 150°C maximum'
+       ' junction temperature and ... θ_JA = 62 °C/W" / "θ_JC = 2.0 °C/W"',
+       "not registered", '(150−25)/62 = 2.0 W (2.4 W with 52 K/W) and (150−25)/2.0 = 62.5 W (125 W for T) do not give 1.5 W / '
+       '32 W. But a flat P_D cap that meets the θ line at T = 57 °C / 86 °C is a legitimate way to rate a '
+       'part, and the OCR scrambles the label-to-value pairing of this block. Not provable.'),
+    _d('reread-r2', 'LM4651 "is the $R_{DS_{(ON)}}$ of the FET times the RMS output current" and "multiplying the output '
+       'current times the $R_{DS(ON)}$"',
+       "not registered", 'Strictly I·R is a voltage, not a power. But both sentences stand next to the correct '
+       '(I_rms)²·2R_DS(on) formula, and the example computes with it. This is wording, with no numerical '
+       'effect.'),
+    _d('reread-r3', "LM4652 'Maximum Saturation Drain Current' min 8 A (V_GS = 6 V) vs 125 W peak 7.91 A plus ripple, and"
+       ' the 10 A limit',
+       "not registered", 'It suggests that a minimum-spec part saturates before the 10 A limit trips. But the real gate drive '
+       "in figure 1 is unknown (lost), and the 10 A theme is registered as 'lm4651-t-ilimit'. This is "
+       'inference, not a contradiction.'),
+    _d('reread-r4', 'TDA5341 "Without damping, a start frequency of 48.4 Hz can be chosen" (above f_osc = 22.7 Hz, '
+       'whereas AN94002 goes *below* f_osc for high damping)',
+       "not registered", "1/(2·22.75 Hz) = 22.0 ms. Pulsing at about half the oscillation period, at the rotor's forward "
+       'overshoot, is a physically sensible choice without damping, so the two notes describe two different '
+       "strategies. The 48.4 Hz ↔ 24 ms arithmetic is already 'tda5341-tstart'."),
+    _d('reread-r5', 'the TDA5144 datasheet (as read for this book): CAP-CD text range "0.9 to 2.2 V" vs table high '
+       'level 2.3 / 2.4 / 2.55 V',
+       "not registered", "A real mismatch (the 1.3 V text window is below the table's 1.4 V minimum window), but it errs on "
+       "the safe side (it gives a larger C) and depends on the book's stated column-pairing "
+       'interpretation. The remark that "the typical values agree with the text" holds for the '
+       "currents, not for the high level (2.4 V typical vs 2.2 V). Worth a note beside the datasheet's figures, not an "
+       'erratum of a source.'),
+    _d('reread-r6', 'LM4651 "The squarewave has a duty cycle proportional to the audio signal level."',
+       "not registered", 'The duty cycle is affine (50 % at no signal, as the DC-offset section says). "Proportional" is '
+       'colloquial here.'),
+    _d('reread-r7', "LM4651 'Standby High Input Voltage' Min 2.5, Typical 2.0",
+       "not registered", 'A guaranteed V_IH above the typical switching point is the normal convention, not a min > typ error.'),
+    _d('reread-r8', 'AN94002 "BZX 79-family are available with tolerances of 1, 2, 3 and 5%" (AN93008: "5, 3, 2 and 1%")',
+       "not registered", "The two notes agree with each other. The datasheet figures read for this book name only the B "
+       "(2 %) and C (5 %) series, "
+       'so the 3 % claim cannot be refuted from the sources.'),
+    _d('reread-r9', 'LM4652 \'I _{DSS}\' "1.0 mA" at 44 V',
+       "not registered", 'Unusually high for a MOSFET, and possibly an OCR µ→m. Unverifiable.'),
+    _d('reread-r10', "LM4651 Example: heat sink sized for T_J = T_JMAX = 150 °C, which is also the LM4652's TSD threshold "
+       '("goes high (6V) once the temperature ... reaches 150°C")',
+       "not registered", 'With 2.5 K/W: 50 + 21·4.7 = 148.7 °C, 1.3 K below the trip point. This is a zero-margin design, not '
+       "an error. The margin problem is already in 'lm4651-rosc''s consequence."),
+    _d('reread-r11', "LM4651 eq (8) 'C = εo εr A/d (Farads)' with ε0 in pF/in",
+       "not registered", 'With ε0 in pF/in the number comes out in pF. The unit label is loose, not wrong. The constant itself'
+       " is 'lm4651-eps0'."),
+    _d('reread-r12', 'AN93008 "R10 becomes 7.87 KΩ" (an E96, 1 %-only value) budgeted at "Resistor tolerances of ±5%"',
+       "not registered", "A real oddity, but it is absorbed by 'an93008-resistor-tol', which already shows the 5 % budget is "
+       'wrong.'),
+    _d('reread-r13', 'AN94002 §2.2 "minimum allowed voltage drop across R7 and T1 of 1 V" while the one-transistor R7 '
+       'drops up to 0.8 V',
+       "not registered", 'R7 approaches 0.8 V only at the limit, where control has passed to T2 anyway. Not an error.'),
+    _d('reread-r14', 'AN94002 parts list R7 "PR01" for option O12 (one-transistor too)',
+       "not registered", '0.8 V × I_lim exceeds a ~1 W PR01 above about 1.25 A (1.6 W at the TDA5144\'s 2 A). But R7 is "TBD", '
+       'the PR01 rating comes from outside the sources, and the user may pick another series. Too weak.'),
+    _d('reread-r15', 'LM4651 Note 3 "For operating at case temperatures above 25°C, the LM4651 must be de–rated based on '
+       '... θ_JA"',
+       "not registered", 'Case temperature with a junction-to-ambient resistance is mismatched wording. The θ_JA value itself '
+       "is 'lm4651-t-theta-ja'."),
+    _d('reread-r16', 'LM4651 Features "15 Lead TO-220 isolated package." vs Note 8 \'LM4652TA ... is a non-isolated '
+       'package\', and "T" vs "TA" for the same non-isolated package',
+       "not registered", 'Marketing shorthand and a naming slip. Nothing for a designer to get wrong.'),
+    _d('reread-r17', 'LM4651 eq (1) 8.4×10⁴ vs eq (2)/table 8.5×10⁴; "10µF ... check approximately every second" (0.84 s)',
+       "not registered", "Already carried by the 'lm4651-cstart' row's reason and the 'lm4651-eq1'/'eq2' equation notes."),
+    _d('reread-r18', 'LM4651 "In bridge operation, each output sees $C_{\\rm BYP}.$ This causes the extra factor of 2"',
+       "not registered", 'Each half sees 2·C_BYP to the virtual midpoint. The wording is loose, but the formula and the "twice'
+       ' C_BYP\'s value" alternative are right. Covered by \'lm4651-filter\'.'),
+    _d('reread-r19', 'TCA5600 figure values (R4 "85K", not an E-series value) and LM4651 "R₂ ... 3.5kΩ" (not E24/E96)',
+       "not registered", "Non-standard values, possibly OCR. No arithmetic depends on them beyond what 'lm4651-gain-4k7' "
+       'covers.'),
+))
+
+__all__ = ["ERRATA_REVIEW", "OUTCOMES", "REREAD", "REREAD_REJECTED", "Decision", "Review"]
