@@ -34,7 +34,9 @@ RERUNS = {
     "an94002/speed_control": {"v_supply": 13.5, "r3": 47e3},
     "an94002/start_oscillator": {"inertia": 150e-6, "pole_pairs": 4, "start_current": 0.8, "f_start": 3.0},
     "an94002/watchdog": {"t_wd_target": 6e-3, "cap_ti": 22e-9},
-    "design/cap_cd": {"pole_pairs": 4, "rpm_min": 1000.0, "rpm_max": 4000.0},
+    # the issue's 24 V fan: motor data too, so the CAP-ST section must follow the reader's motor
+    "design/cap_cd": {"pole_pairs": 4, "rpm_min": 1500.0, "rpm_max": 6000.0, "inertia": 20e-6, "torque_constant": 0.03,
+                      "start_current": 0.35},
     "design/class_d": {"p_out": 60.0, "r_load": 8.0},
     "design/converter": {"v_supply_min": 10.0, "i_out": 0.08, "f_min": 25e3},
     "design/current_limiter": {"i_no_trip": 0.5, "i_must_trip": 1.2},
@@ -372,6 +374,24 @@ def test_commutation_chapter_with_a_four_pole_pair_motor_and_the_datasheets_curr
     # (and its row shows no recomputed value: one for the reader's motor would stand under the note's label)
     assert "| CAP-CD lower bound for 1800 rpm, 6 pole pairs | 0.0148 uF | — | n/a |" in tables
     assert "| 1.4 V | 1.4 V | exact |" in tables
+
+
+def test_cap_cd_chapter_sizes_cap_st_and_cap_ti_for_the_readers_motor(tmp_path_factory):
+    """The issue's 24 V fan (4 pole pairs, 1500 to 6000 rpm, J = 20e-6, K_t = 0.03, 0.35 A start): the motor
+    section's figures are the library's for the reader's spec, its rocking band holds the nominal eq 2 frequency
+    worked here by hand, and no verdict names the note's speed range."""
+    import math
+
+    from handbook.design import commutation
+
+    g, tables = _glued(rerun("design/cap_cd", tmp_path_factory))
+    spec = dict(RERUNS["design/cap_cd"], flyback_time=1e-3, rpm_reverse=500.0)
+    r = commutation.design(spec)
+    assert g["f_min"] == pytest.approx(r.start.f_osc_min, rel=1e-12) and g["cap_st"] == pytest.approx(r.cap_st * 1e6)
+    nominal = math.sqrt(0.03 * 0.35 * 4 / 20e-6) / (2 * math.pi)  # 7.29 Hz
+    assert g["f_nom"] == pytest.approx(nominal, rel=1e-12) and g["f_min"] < nominal < g["f_max"]
+    assert "meets 1500..6000 rpm" in tables and "1800..3600" not in tables
+    assert "AN94002's example motor" not in g["motor_note"]
 
 
 def test_opamp_limiter_chapter_with_a_matched_network_and_200mV(tmp_path_factory):
