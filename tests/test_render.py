@@ -3,6 +3,7 @@ import json
 import shutil
 from pathlib import Path
 
+import pytest
 from bs4 import BeautifulSoup
 
 from handbook import cli
@@ -43,3 +44,44 @@ def test_render_needs_exactly_one_input(capsys):
     assert "either a notebook or --spec" in capsys.readouterr().err
     assert cli.main(["render", "no_such.ipynb"]) == 2
     assert "is not a notebook file" in capsys.readouterr().err
+
+
+def _cli(*args):
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-m", "handbook", *args], capture_output=True, text=True, timeout=300)
+
+
+def test_rerun_refuses_a_misspelt_or_mistyped_parameter_in_one_line_before_anything_runs():
+    out = _cli("rerun", "cap_cd", "-p", "pole_pair", "4")
+    assert out.returncode == 2 and out.stdout == "" and "Traceback" not in out.stderr
+    assert out.stderr.strip().splitlines() == [out.stderr.strip()] and "did you mean 'pole_pairs'?" in out.stderr
+    out = _cli("rerun", "design/cap_cd", "-p", "pole_pairs", "four")
+    assert out.returncode == 2 and "'pole_pairs' = 'four' is not a whole number" in out.stderr
+    out = _cli("rerun", "no_such_chapter")
+    assert out.returncode == 2 and "design/cap_cd" in out.stderr and "Traceback" not in out.stderr
+
+
+def test_papermill_itself_stops_a_chapter_given_an_unknown_parameter(tmp_path):
+    """`papermill ... -p pole_pair 4` used to run with the note's 6 pole pairs and exit 0; report.setup() now
+    stops the chapter in its first cell, naming the parameter it probably meant."""
+    import papermill as pm
+
+    with pytest.raises(pm.PapermillExecutionError, match="did you mean 'pole_pairs'"):
+        pm.execute_notebook(str(BOOK / "design" / "cap_cd.ipynb"), str(tmp_path / "out.ipynb"),
+                            parameters={"pole_pair": 4}, kernel_name="python3", cwd=str(BOOK / "design"),
+                            progress_bar=False)
+
+
+def test_render_says_a_notebook_stopped_and_why(tmp_path, capsys):
+    nb = {"cells": [{"cell_type": "markdown", "metadata": {}, "source": ["# A chapter\n"]},
+                    {"cell_type": "code", "execution_count": 3, "metadata": {}, "source": ["1/0"],
+                     "outputs": [{"output_type": "error", "ename": "InputError", "evalue": "bad key 'x'\nmore",
+                                  "traceback": []}]}],
+          "metadata": {}, "nbformat": 4, "nbformat_minor": 5}
+    path = tmp_path / "stopped.ipynb"
+    path.write_text(json.dumps(nb))
+    assert cli.main(["render", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "did not run to the end (cell 3: InputError: bad key 'x')" in err and "rerun" in err

@@ -275,6 +275,19 @@ def cmd_render(args) -> int:
     return 0
 
 
+def cmd_rerun(args) -> int:
+    from . import render
+    from .core import InputError
+
+    try:
+        page = render.rerun(args.chapter, [tuple(p) for p in args.param or []], args.out)
+    except InputError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    print(page)
+    return 0
+
+
 def _filters(p, statuses: str) -> None:
     p.add_argument("--json", action="store_true", help="a JSON list; values in SI base units")
     p.add_argument("--source", metavar="TEXT", help="only entries whose source or id contains TEXT (e.g. AN94002)")
@@ -319,6 +332,12 @@ def main(argv=None) -> int:
     p.add_argument("--spec", metavar="SPEC.toml", help="run 'Design your own' on this spec, then render it")
     p.add_argument("-o", "--out", metavar="DIR", help="where the page goes (default: beside the input, NAME_html)")
     p.set_defaults(func=cmd_render)
+    p = sub.add_parser("rerun", help="re-run a chapter with other values (checked before anything runs) and render it")
+    p.add_argument("chapter", help="the chapter, e.g. design/cap_cd or cap_cd (every chapter with a parameters cell)")
+    p.add_argument("-p", "--param", nargs=2, action="append", metavar=("NAME", "VALUE"),
+                   help="a parameter and its value (a number, None, or text), as often as needed")
+    p.add_argument("-o", "--out", metavar="DIR", help="folder for the page (default: <chapter>_html here)")
+    p.set_defaults(func=cmd_rerun)
     args = parser.parse_args(argv)
     return args.func(args)
 

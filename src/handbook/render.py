@@ -7,6 +7,7 @@ notebook with the project's own ``_config.yml``, extension and style sheet, with
 
     python -m handbook render out.ipynb [-o DIR]            # a chapter re-run with papermill
     python -m handbook render --spec my_spec.toml [-o DIR]  # "Design your own" on a spec, then rendered
+    python -m handbook rerun design/cap_cd -p pole_pairs 4 [-o DIR]   # a chapter with other values, checked first
 
 and prints the path of the page to open.
 """
@@ -59,11 +60,15 @@ def render(notebook: str | Path, out: str | Path | None = None, warnings: list |
     nb = Path(notebook).resolve()
     if not nb.is_file() or nb.suffix != ".ipynb":
         raise InputError(f"render: {notebook!r} is not a notebook file (.ipynb); give the notebook papermill wrote")
+    failed, title = _stopped_and_title(nb)
+    if failed:
+        raise InputError(f"render: {nb.name} did not run to the end ({failed}); fix the input and re-run it "
+                         "(python -m handbook rerun)")
     target = Path(out).resolve() if out else nb.with_name(nb.stem + "_html")
     with tempfile.TemporaryDirectory(prefix="handbook-render-") as tmp:
         src = Path(tmp)
         shutil.copy(nb, src / "page.ipynb")
-        (src / "_config.yml").write_text(yaml.safe_dump(_config(root, nb.stem), sort_keys=False))
+        (src / "_config.yml").write_text(yaml.safe_dump(_config(root, title or nb.stem), sort_keys=False))
         (src / "_toc.yml").write_text("format: jb-book\nroot: page\n")
         proc = subprocess.run([sys.executable, "-c", "from jupyter_book.cli.main import main; main()", "build",
                                str(src), "--path-output", str(src), "--all", "-q"],
@@ -84,6 +89,96 @@ def render(notebook: str | Path, out: str | Path | None = None, warnings: list |
             shutil.rmtree(target)
         shutil.copytree(html, target)
     return target / "page.html"
+
+
+def _stopped_and_title(nb: Path) -> tuple[str, str]:
+    """(where and why an executed notebook stopped, or ''; the chapter's title from its first heading, or '')."""
+    import json
+
+    try:
+        cells = json.loads(nb.read_text(encoding="utf-8"))["cells"]
+    except (ValueError, KeyError) as exc:
+        raise InputError(f"render: {nb.name} is not a readable notebook ({exc})") from None
+    title = next((line[2:].strip() for c in cells if c["cell_type"] == "markdown"
+                  for line in "".join(c["source"]).splitlines() if line.startswith("# ")), "")
+    for c in cells:
+        for o in c.get("outputs", []):
+            if o.get("output_type") == "error":
+                return f"cell {c.get('execution_count')}: {o.get('ename')}: {str(o.get('evalue')).splitlines()[0]}", title
+    return "", title
+
+
+def _chapters(root: Path) -> dict:
+    """Every chapter with a parameters cell: "design/cap_cd" -> its notebook."""
+    import json
+
+    out = {}
+    for path in sorted((root / "book").rglob("*.ipynb")):
+        if "_build" in path.parts or ".ipynb_checkpoints" in path.parts:
+            continue
+        cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+        if any("parameters" in c.get("metadata", {}).get("tags", []) for c in cells):
+            out[path.relative_to(root / "book").with_suffix("").as_posix()] = path
+    return out
+
+
+def _value(text: str):
+    """A command-line value as papermill's -p reads it: a Python literal (4, 0.5, None, "E12"), else text."""
+    import ast
+
+    try:
+        return ast.literal_eval(text)
+    except (ValueError, SyntaxError):
+        return text
+
+
+def rerun(chapter: str, pairs: list[tuple[str, str]], out: str | Path | None = None) -> Path:
+    """Re-run a chapter with other values, checked first, then render it; returns the page's path.
+
+    Parameters
+    ----------
+    chapter : str
+        The chapter, as "design/cap_cd" or "cap_cd" (a name no other chapter has).
+    pairs : list of tuple
+        (name, value as text) per parameter to change.
+    out : str or Path or None
+        The folder to write the page into (default: ``<chapter>_html`` in the working directory).
+
+    Returns
+    -------
+    Path
+        The rendered page.
+    """
+    import json
+
+    import papermill as pm
+
+    from .core import parameters
+
+    root = _project()
+    chapters = _chapters(root)
+    names = {k: v for k, v in chapters.items() if k == chapter or k.rsplit("/", 1)[-1] == chapter}
+    if len(names) != 1:
+        import difflib
+
+        near = difflib.get_close_matches(chapter, list(chapters), n=1)
+        hint = f" (did you mean {near[0]!r}?)" if near else ""
+        raise InputError(f"rerun: no chapter {chapter!r} with a parameters cell{hint}; they are {', '.join(chapters)}")
+    (key, path), = names.items()
+    cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    cell = next(c for c in cells if "parameters" in c.get("metadata", {}).get("tags", []))
+    given = {name: _value(text) for name, text in pairs}
+    parameters.check(parameters.assignments("".join(cell["source"])), given, chapter=key)
+    target = Path(out).resolve() if out else Path.cwd() / (key.replace("/", "_") + "_html")
+    with tempfile.TemporaryDirectory(prefix="handbook-rerun-") as tmp:
+        nb = Path(tmp) / f"{path.stem}.ipynb"
+        try:
+            pm.execute_notebook(str(path), str(nb), parameters=given, kernel_name="python3", cwd=str(path.parent),
+                                progress_bar=False)
+        except pm.PapermillExecutionError as exc:
+            why = str(exc.evalue).splitlines()[0] if exc.evalue else exc.ename
+            raise InputError(f"rerun: {key} stopped in its cell {exc.exec_count}: {exc.ename}: {why}") from None
+        return render(nb, target)
 
 
 def render_spec(spec: str | Path, out: str | Path | None = None) -> Path:

@@ -9,7 +9,15 @@ from IPython.display import Markdown, Math, display
 
 
 def setup() -> None:
-    """The one setup call of every chapter: quiet warnings, deterministic plots."""
+    """The one setup call of every chapter: parameters a reader injected are checked (an unknown name or a value
+    of the wrong kind stops the chapter here, naming it), then quiet warnings and deterministic plots."""
+    from IPython import get_ipython
+
+    from ..core import parameters
+
+    shell = get_ipython()
+    if shell is not None:
+        parameters.check_history(list(shell.user_ns.get("In", [])))
     warnings.filterwarnings("ignore", category=DeprecationWarning)
     warnings.filterwarnings("ignore", category=FutureWarning)
     # matplotlib warns when its search for the "best" legend spot takes over 1 s: a statement about the
