@@ -36,7 +36,7 @@ RERUNS = {
     "an94002/watchdog": {"t_wd_target": 6e-3, "cap_ti": 22e-9},
     # the issue's 24 V fan: motor data too, so the CAP-ST section must follow the reader's motor
     "design/cap_cd": {"pole_pairs": 4, "rpm_min": 1500.0, "rpm_max": 6000.0, "inertia": 20e-6, "torque_constant": 0.03,
-                      "start_current": 0.35},
+                      "start_current": 0.35, "flyback_time": 1e-3, "rpm_reverse": 500.0},
     "design/class_d": {"p_out": 60.0, "r_load": 8.0},
     "design/converter": {"v_supply_min": 10.0, "i_out": 0.08, "f_min": 25e3},
     "design/current_limiter": {"i_no_trip": 0.5, "i_must_trip": 1.2},
@@ -212,6 +212,8 @@ def param_default(nb: dict, key: str):
 def si_value(value: float, unit: str) -> tuple[str, float] | None:
     """A parameter's value as (base unit, SI value): ('Ω', 5600.0); a fraction as ('%', 5.0)."""
     unit = {"ohm": "Ω", "degC": "°C", "C": "°C"}.get(unit, unit)
+    if value is None:  # a parameter the note does not give (no motor data): nothing of it to find in the prose
+        return None
     if unit in ("1", ""):
         return ("%", value * 100) if 0 < value < 1 else None
     return (unit, float(value)) if unit in BASES else None
@@ -348,7 +350,9 @@ def _glued(nb_path):
         for o in cell.get("outputs", []):
             data = o.get("data", {})
             name = o.get("metadata", {}).get("scrapbook", {}).get("name")
-            if name:
+            if name and "application/papermill.record/text/markdown" in data:  # glued Markdown: its text
+                out[name] = "".join(data["application/papermill.record/text/markdown"])
+            elif name:
                 text = "".join(data["application/papermill.record/text/plain"])
                 try:
                     out[name] = float(text)
@@ -385,13 +389,13 @@ def test_cap_cd_chapter_sizes_cap_st_and_cap_ti_for_the_readers_motor(tmp_path_f
     from handbook.design import commutation
 
     g, tables = _glued(rerun("design/cap_cd", tmp_path_factory))
-    spec = dict(RERUNS["design/cap_cd"], flyback_time=1e-3, rpm_reverse=500.0)
+    spec = dict(RERUNS["design/cap_cd"])
     r = commutation.design(spec)
     assert g["f_min"] == pytest.approx(r.start.f_osc_min, rel=1e-12) and g["cap_st"] == pytest.approx(r.cap_st * 1e6)
     nominal = math.sqrt(0.03 * 0.35 * 4 / 20e-6) / (2 * math.pi)  # 7.29 Hz
     assert g["f_nom"] == pytest.approx(nominal, rel=1e-12) and g["f_min"] < nominal < g["f_max"]
     assert "meets 1500..6000 rpm" in tables and "1800..3600" not in tables
-    assert "AN94002's example motor" not in g["motor_note"]
+    assert "AN94002's example motor" not in g["motor_intro"] and "J = 20 µ" in g["motor_intro"]
 
 
 def test_opamp_limiter_chapter_with_a_matched_network_and_200mV(tmp_path_factory):
