@@ -85,3 +85,21 @@ def test_render_says_a_notebook_stopped_and_why(tmp_path, capsys):
     assert cli.main(["render", str(path)]) == 2
     err = capsys.readouterr().err
     assert "did not run to the end (cell 3: InputError: bad key 'x')" in err and "rerun" in err
+
+
+def test_a_rerun_page_shows_one_parameters_cell_with_the_readers_values_and_names_linked_chapters(tmp_path):
+    from handbook import render
+
+    nb = {"cells": [{"cell_type": "markdown", "metadata": {}, "source": ["# Title\n", "See {doc}`../an94002/watchdog` "
+                                                                         "and {doc}`the delay <../an94002/commutation_delay>`.\n"]},
+                    {"cell_type": "code", "metadata": {"tags": ["parameters"]}, "outputs": [], "execution_count": 1,
+                     "source": ["pole_pairs = 6          # n\n", "rpm_min = 1800.0        # rpm\n"]},
+                    {"cell_type": "code", "metadata": {"tags": ["injected-parameters"]}, "outputs": [],
+                     "execution_count": 2, "source": ["# Parameters\n", "pole_pairs = 4\n"]}],
+          "metadata": {}, "nbformat": 4, "nbformat_minor": 5}
+    path = tmp_path / "x.ipynb"
+    path.write_text(json.dumps(nb))
+    page = json.loads(render._for_one_page(path, render.ROOT))
+    assert len(page["cells"]) == 2 and "".join(page["cells"][1]["source"]) == "pole_pairs = 4  # n\nrpm_min = 1800.0        # rpm\n"
+    text = "".join(page["cells"][0]["source"])
+    assert "{doc}" not in text and "the chapter *Watchdog timer: CAP-TI*" in text and "*the delay*" in text

@@ -67,7 +67,7 @@ def render(notebook: str | Path, out: str | Path | None = None, warnings: list |
     target = Path(out).resolve() if out else nb.with_name(nb.stem + "_html")
     with tempfile.TemporaryDirectory(prefix="handbook-render-") as tmp:
         src = Path(tmp)
-        shutil.copy(nb, src / "page.ipynb")
+        (src / "page.ipynb").write_text(_for_one_page(nb, root), encoding="utf-8")
         (src / "_config.yml").write_text(yaml.safe_dump(_config(root, title or nb.stem), sort_keys=False))
         (src / "_toc.yml").write_text("format: jb-book\nroot: page\n")
         proc = subprocess.run([sys.executable, "-c", "from jupyter_book.cli.main import main; main()", "build",
@@ -106,6 +106,62 @@ def _stopped_and_title(nb: Path) -> tuple[str, str]:
             if o.get("output_type") == "error":
                 return f"cell {c.get('execution_count')}: {o.get('ename')}: {str(o.get('evalue')).splitlines()[0]}", title
     return "", title
+
+
+_DOC = re.compile(r"\{doc\}`([^`<]*?)(?:\s*<([^>]+)>)?`")
+
+
+def _for_one_page(nb: Path, root: Path) -> str:
+    """The notebook as one page shows it: a re-run's values written into the chapter's own parameters cell (its
+    unit comments kept) instead of a second, injected cell; links to the book's other chapters named in words
+    (a one-page build cannot resolve them)."""
+    import json
+
+    doc = json.loads(nb.read_text(encoding="utf-8"))
+    cells = doc["cells"]
+    tags = [c.get("metadata", {}).get("tags", []) for c in cells]
+    own = next((i for i, t in enumerate(tags) if "parameters" in t), None)
+    injected = next((i for i, t in enumerate(tags) if "injected-parameters" in t), None)
+    if own is not None and injected is not None:
+        from .core import parameters
+
+        values = parameters.assignments("".join(cells[injected]["source"]))
+        lines = "".join(cells[own]["source"]).splitlines(keepends=True)
+        for k, line in enumerate(lines):
+            m = re.match(r"(\s*)([A-Za-z_]\w*)(\s*=\s*)([^#\n]*?)\s*(#.*)?(\n?)$", line)
+            if m and m.group(2) in values:
+                comment = f"  {m.group(5)}" if m.group(5) else ""
+                lines[k] = f"{m.group(1)}{m.group(2)}{m.group(3)}{values.pop(m.group(2))!r}{comment}{m.group(6)}"
+        lines += [f"{name} = {value!r}\n" for name, value in values.items()]
+        cells[own]["source"] = lines
+        del cells[injected]
+    titles = {}
+    for c in cells:
+        if c["cell_type"] != "markdown":
+            continue
+        text = "".join(c["source"])
+
+        def named(m):
+            label, target = m.group(1).strip(), (m.group(2) or m.group(1)).strip()
+            if m.group(2) and label:
+                return f"*{label}*"
+            if target not in titles:
+                path = _chapter_path(root, nb, target)
+                titles[target] = _stopped_and_title(path)[1] if path else ""
+            return f"the chapter *{titles[target] or target}*"
+        c["source"] = _DOC.sub(named, text).splitlines(keepends=True)
+    return json.dumps(doc)
+
+
+def _chapter_path(root: Path, nb: Path, target: str) -> Path | None:
+    """The notebook a ``{doc}`` target names: relative to one of the book's folders (the re-run's own folder is
+    not known once papermill has written it elsewhere)."""
+    book = root / "book"
+    for base in (book, *sorted(p for p in book.iterdir() if p.is_dir())):
+        path = (base / target).with_suffix(".ipynb").resolve()
+        if path.is_file():
+            return path
+    return None
 
 
 def _chapters(root: Path) -> dict:
