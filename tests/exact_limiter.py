@@ -25,6 +25,8 @@ def _problem(spec):
     p.sums, first = np.unique((r9 + r10).ravel(), return_index=True)
     p.pairs = (r9.ravel()[first], r10.ravel()[first])
     p.r11, p.r12, p.r13 = (np.array(values[n], float) for n in ("r11", "r12", "r13"))
+    gap = lambda v: float(np.log(v[1:] / v[:-1]).max()) if len(v) > 1 else np.inf  # noqa: E731
+    p.gap_s, p.gap_12 = gap(p.sums), gap(p.r12)
     p.t, p.t7 = float(s["resistor_tolerance"]), float(s["r7_tolerance"])
     vz0 = float(s["zener_voltage"])
     dz = vz0 * s["zener_tolerance"] + s["zener_tc"] * s["temp_span"]
@@ -162,8 +164,12 @@ def _effects(b, p):
         eff.append(np.abs(f1[0] - f2[0]) / vs + (np.abs(f1[1] - f2[1]) + np.abs(f1[2] - f2[2])) / max(p.head, 1e-3)
                    + np.abs(f1[3] - f2[3]) / p.dmax)
     eff = np.stack(eff, 1)
-    can = np.stack([np.where(b["a11"] == b["b11"], b["sh"] > b["sl"], b["r2"] > b["r1"]), b["b11"] > b["a11"],
-                    np.where(b["a13"] == b["b13"], b["ph"] > b["pl"], b["u2"] > b["u1"]), b["b13"] > b["a13"]], 1)
+    # a ratio range narrower than the largest step of its list is not split while its magnitude can be (it
+    # would hold no network for most magnitudes)
+    can = np.stack([np.where(b["a11"] == b["b11"], b["sh"] > b["sl"], np.log(b["r2"] / b["r1"]) > p.gap_s),
+                    b["b11"] > b["a11"],
+                    np.where(b["a13"] == b["b13"], b["ph"] > b["pl"], np.log(b["u2"] / b["u1"]) > p.gap_12),
+                    b["b13"] > b["a13"]], 1)
     return np.where(can, eff + 1e-300, -1.0), can.any(axis=1)
 
 

@@ -90,8 +90,8 @@ def test_render_says_a_notebook_stopped_and_why(tmp_path, capsys):
 def test_a_rerun_page_shows_one_parameters_cell_with_the_readers_values_and_names_linked_chapters(tmp_path):
     from handbook import render
 
-    nb = {"cells": [{"cell_type": "markdown", "metadata": {}, "source": ["# Title\n", "See {doc}`../an94002/watchdog` "
-                                                                         "and {doc}`the delay <../an94002/commutation_delay>`.\n"]},
+    prose = ["# Title\n", "See {doc}`../an94002/watchdog` and {doc}`the delay <../an94002/commutation_delay>`.\n"]
+    nb = {"cells": [{"cell_type": "markdown", "metadata": {}, "source": prose},
                     {"cell_type": "code", "metadata": {"tags": ["parameters"]}, "outputs": [], "execution_count": 1,
                      "source": ["pole_pairs = 6          # n\n", "rpm_min = 1800.0        # rpm\n"]},
                     {"cell_type": "code", "metadata": {"tags": ["injected-parameters"]}, "outputs": [],
@@ -100,6 +100,7 @@ def test_a_rerun_page_shows_one_parameters_cell_with_the_readers_values_and_name
     path = tmp_path / "x.ipynb"
     path.write_text(json.dumps(nb))
     page = json.loads(render._for_one_page(path, render.ROOT))
-    assert len(page["cells"]) == 2 and "".join(page["cells"][1]["source"]) == "pole_pairs = 4  # n\nrpm_min = 1800.0        # rpm\n"
+    params = "".join(page["cells"][1]["source"])
+    assert len(page["cells"]) == 2 and params == "pole_pairs = 4  # n\nrpm_min = 1800.0        # rpm\n"
     text = "".join(page["cells"][0]["source"])
     assert "{doc}" not in text and "the chapter *Watchdog timer: CAP-TI*" in text and "*the delay*" in text
