@@ -1,11 +1,12 @@
 """Speed and proof of the design engine, measured once and written to book/design/benchmark.json.
 
-Usage: python tools/benchmark.py
+Usage: python tools/benchmark.py [--wide-only]
 Measures: one `python -m handbook design` run from the shell (wall time, median of 5); each design against
 its exhaustive enumeration; the limiter network's exact search against exhaustive enumeration
 (tests/oracles.py: every network, every corner from the node equations) on 200 generated specifications with
 reduced series; the search on 520 wide generated specifications (E24..E192, every figure varied: time of
-every answer, each design held at every corner of the oracle, the proof flags counted); and the full-E96
+every answer, each design held at every corner of the oracle and against the exact reference of
+tests/exact_limiter.py, the proof flags counted); and the full-E96
 default with the enumeration's time extrapolated from a measured sample. Not a test (timings depend on the
 machine); the book shows the committed results.
 """
@@ -23,6 +24,8 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
+
+from exact_limiter import exact_limiter  # noqa: E402
 
 from handbook.core import InputError  # noqa: E402
 from handbook.design import class_d, commutation, limiter  # noqa: E402
@@ -118,6 +121,7 @@ def limiter_wide(cases: int = 520) -> dict:
     at every corner of the oracle, and the proof flags counted."""
     rng = np.random.default_rng(18)
     times, designs, infeasible, unproven, sound, invalid = [], 0, 0, 0, 0, 0
+    exact = {"checked": 0, "same": 0, "budget": 0, "differ": []}
     for _ in range(cases):
         spec = wide_spec(rng)
         try:
@@ -129,10 +133,12 @@ def limiter_wide(cases: int = 520) -> dict:
         try:
             r = limiter.design(spec)
         except Infeasible:
-            times.append(time.perf_counter() - t)
+            r = None
+        times.append(time.perf_counter() - t)
+        _against_exact(spec, r, exact)
+        if r is None:
             infeasible += 1
             continue
-        times.append(time.perf_counter() - t)
         designs += 1
         unproven += not (r.r7_proven and r.best_proven)
         lo, hi, head, i_div = limiter_corners(r.r7, r.network, r.spec)
@@ -144,7 +150,28 @@ def limiter_wide(cases: int = 520) -> dict:
     return {"cases": len(times), "invalid_skipped": invalid, "designs": designs, "infeasible": infeasible,
             "unproven": int(unproven), "sound_at_every_corner": int(sound), "median_s": float(q[0]),
             "p90_s": float(q[1]), "p99_s": float(q[2]), "max_s": float(max(times)),
-            "over_2_s": int(sum(t > 2 for t in times)), "over_10_s": int(sum(t > 10 for t in times))}
+            "over_2_s": int(sum(t > 2 for t in times)), "over_10_s": int(sum(t > 10 for t in times)),
+            "exact_reference": exact}
+
+
+def _against_exact(spec, r, exact, budget=2_000_000):
+    """The design's answer against tests/exact_limiter.py (sharing no code with it): the same smallest R7 (or
+    both none), the worst margin within GAP of the reference's best and not above it, the bound above it."""
+    try:
+        ref = exact_limiter(spec, max_boxes=budget)
+    except RuntimeError:
+        exact["budget"] += 1
+        return
+    exact["checked"] += 1
+    if r is None or ref is None:
+        ok = r is None and ref is None
+    else:
+        worst = min(r.margin_low, r.margin_high)
+        ok = (r.r7 == ref[0] and ref[2] - limiter.GAP - 1e-9 <= worst <= ref[2] + 1e-9
+              and r.margin_bound >= ref[2] - 1e-9)
+    exact["same"] += ok
+    if not ok:
+        exact["differ"].append(spec)
 
 
 def limiter_network() -> dict:
@@ -164,6 +191,13 @@ def limiter_network() -> dict:
 
 
 def main():
+    if "--wide-only" in sys.argv:  # only the wide specs again, written into the JSON beside the rest
+        path = ROOT / "book" / "design" / "benchmark.json"
+        out = json.loads(path.read_text())
+        out["limiter_network"]["wide"] = limiter_wide()
+        path.write_text(json.dumps(out, indent=1) + "\n")
+        print(json.dumps(out["limiter_network"]["wide"], indent=1))
+        return
     with tempfile.TemporaryDirectory() as tmp:
         spec = Path(tmp) / "empty.toml"
         spec.write_text("")
