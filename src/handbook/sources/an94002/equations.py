@@ -210,7 +210,7 @@ def eq5() -> Equation:
         scales={RPM: N * u.minute, I: I / A, dV: dV / V},
         derived=timer_law(C_CD, I, 1 / (6 * n * N), dV), units={I: A, dV: V, N: 1 / S},
         law="charge balance I t_com = C dV over one commutation interval",
-        note="Evaluated with I_ch,max and the window at RPM_min it becomes the bound C >= ...",
+        note="Evaluated with I_ch,max and the window at RPM_min it becomes eq 6's lower bound on CAP-CD.",
         relation="=",
     )
 
