@@ -98,7 +98,7 @@ def test_errata_by_source_document_and_as_book_entries():
     assert counts[-1].split("|")[-2].strip() == str(len(rows))
     text = report.errata_md(by_note["AN94002"]).data
     # the note's 22 uA against the TDA5144's 11 uA charge current, in the note's own unit
-    assert "printed 22 uA, recomputed 11 uA" in text
+    assert "printed 22 µA, recomputed 11 µA" in text  # units as a person reads them
     assert text.count("\n- ") + 1 == len(by_note["AN94002"])
     assert "Evidence: " in text and "For a designer: " in text
     assert not re.search(r"\.\.(\\|$)", text, re.MULTILINE)  # one full stop at each sentence's end

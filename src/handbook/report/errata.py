@@ -5,7 +5,7 @@ from __future__ import annotations
 from IPython.display import Markdown
 
 from ..core.claim import CONFIDENCE
-from .tables import ERRATA_KINDS, _printed_and_recomputed, table
+from .tables import ERRATA_KINDS, _printed_and_recomputed, readable, table
 
 
 def errata_counts(rows: list[dict], notes: list[dict] | None = None) -> Markdown:
@@ -52,14 +52,15 @@ def errata_md(rows: list[dict]) -> Markdown:
         return Markdown("No errata.")
     items = []
     for r in rows:
-        nums = _printed_and_recomputed(r)
-        head = (f"**{r['what']}** (`{r['id']}`; {r['source']}; *{ERRATA_KINDS[r['kind']]}*, {r['confidence']})"
-                + (f": {nums}." if nums else ""))
+        nums = readable(_printed_and_recomputed(r))
+        head = (f"**{readable(r['what'])}** (`{r['id']}`; {r['source']}; *{ERRATA_KINDS[r['kind']]}*, "
+                f"{r['confidence']})" + (f": {nums}." if nums else ""))
         lines = [f"- {head}", f"  The source: {_quoted(r['note'], r['quote'])}",
-                 f"  Evidence: {_sentence(r['evidence'])}", f"  Read charitably: {_sentence(r['charitable'])}"]
+                 f"  Evidence: {readable(_sentence(r['evidence']))}",
+                 f"  Read charitably: {readable(_sentence(r['charitable']))}"]
         if r["places"]:
-            lines.append(f"  Also printed at: {'; '.join(r['places'])}.")
-        lines.append(f"  For a designer: {_sentence(r['consequence'])}")
+            lines.append(f"  Also printed at: {readable('; '.join(r['places']))}.")
+        lines.append(f"  For a designer: {readable(_sentence(r['consequence']))}")
         items.append("\\\n".join(lines))
     return Markdown("\n".join(items))
 
@@ -68,10 +69,12 @@ def reading_notes_md(rows: list[dict]) -> Markdown:
     """Reading notes (not errors of the source) as a list: what, where, and how the book reads it."""
     if not rows:
         return Markdown("No reading notes.")
-    return Markdown("\n".join(f"- **{r['what']}** ({r['source']}): {_sentence(r['note_text'])}" for r in rows))
+    return Markdown("\n".join(f"- **{readable(r['what'])}** ({r['source']}): {readable(_sentence(r['note_text']))}"
+                               for r in rows))
 
 
 def review_table(review, said: str = "review said") -> Markdown:
     """A review of the errata and what was decided about each id it questioned: the review's verdict (headed
     ``said``), the decision and why."""
-    return table(["id", said, "decision", "why"], [[d.id, d.verdict, d.outcome, d.why] for d in review.decisions])
+    return table(["id", said, "decision", "why"],
+                 [[d.id, readable(d.verdict), d.outcome, readable(d.why)] for d in review.decisions])

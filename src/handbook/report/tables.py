@@ -4,6 +4,8 @@ Everything shown is rounded and free of addresses or timings, so nbval can compa
 """
 from __future__ import annotations
 
+import re
+
 from IPython.display import Markdown
 
 from ..core.claim import UNIT_SCALES
@@ -14,6 +16,19 @@ BADGE = {"exact": "exact", "rounding": "rounding", "truncated": "truncated (last
          "rounded intermediate": "rounding (of a rounded intermediate)", "bound met": "bound met",
          "conservative": "conservative (rounded to the safe side)", "misprint": "**misprint**",
          "inconsistent": "**inconsistent**", "wrong method": "**wrong method**", "n/a": "n/a"}
+
+
+_READABLE = ((re.compile(r"(\d)\s?u([FAHVWsm]|Ohm)\b"), "\\1 µ\\2"), (re.compile(r"(\d)\s?kohm\b"), "\\1 kΩ"),
+             (re.compile(r"(\d)\s?Mohm\b"), "\\1 MΩ"), (re.compile(r"(\d)\s?mOhm\b"), "\\1 mΩ"),
+             (re.compile(r"(\d)\s?ohm\b"), "\\1 Ω"), (re.compile(r"\+-\s?"), "±"), (re.compile(r"µOhm"), "µΩ"))
+
+
+def readable(text: str) -> str:
+    """Units as a person reads them in the registries' ASCII text: 0.23 uF -> 0.23 µF, 750 ohm -> 750 Ω,
+    4.7 kohm -> 4.7 kΩ, +-5 % -> ±5 %. Verbatim quotes of a source are not passed through it."""
+    for pattern, repl in _READABLE:
+        text = pattern.sub(repl, str(text))
+    return text
 
 
 def _cell(x) -> str:
@@ -41,7 +56,7 @@ def examples_table(rows: list[dict], source: bool = False) -> Markdown:
         elif r.get("relation") in (">=", "<="):  # a bound: the print is compared with it, not equated
             shown = f"{shown} (printed {'≥' if r['relation'] == '>=' else '≤'} this)"
         cells = [r["source"]] * source + [r["quantity"], printed, shown, BADGE[r["status"]], r["reason"]]
-        lines.append("| " + " | ".join(_cell(c) for c in cells) + " |")
+        lines.append("| " + " | ".join(_cell(readable(c)) for c in cells) + " |")
     return Markdown("\n".join(lines))
 
 
