@@ -20,7 +20,8 @@ BADGE = {"exact": "exact", "rounding": "rounding", "truncated": "truncated (last
 
 _READABLE = ((re.compile(r"(\d)\s?u([FAHVWsm]|Ohm)\b"), "\\1 µ\\2"), (re.compile(r"(\d)\s?kohm\b"), "\\1 kΩ"),
              (re.compile(r"(\d)\s?Mohm\b"), "\\1 MΩ"), (re.compile(r"(\d)\s?mOhm\b"), "\\1 mΩ"),
-             (re.compile(r"(\d)\s?ohm\b"), "\\1 Ω"), (re.compile(r"\+-\s?"), "±"), (re.compile(r"µOhm"), "µΩ"))
+             (re.compile(r"(\d)\s?ohm\b"), "\\1 Ω"), (re.compile(r"\+-\s?"), "±"), (re.compile(r"µOhm"), "µΩ"),
+             (re.compile(r"([/*])u([FAH])\b"), "\\1µ\\2"))
 
 
 def readable(text: str) -> str:
