@@ -376,7 +376,7 @@ def test_commutation_chapter_with_a_four_pole_pair_motor_and_the_datasheets_curr
     assert "times it: conservative, by more than a rounding" in g["round_160"]
     # the note's printed bound no longer applies; numbers that do not depend on the motor still compare
     # (and its row shows no recomputed value: one for the reader's motor would stand under the note's label)
-    assert "| CAP-CD lower bound for 1800 rpm, 6 pole pairs | 0.0148 uF | — | n/a |" in tables
+    assert "| CAP-CD lower bound for 1800 rpm, 6 pole pairs | 0.0148 µF | — | n/a |" in tables
     assert "| 1.4 V | 1.4 V | exact |" in tables
 
 
