@@ -1,19 +1,20 @@
 """The limiter design (handbook.design.limiter) against an exact reference over the full series.
 
 tests/exact_limiter.py is a branch and bound written from the node equations again, sharing no code with the
-design; its bounds hold for every network of a box and are exact on one network (its docstring has the
-proofs), so it returns the true smallest R7 and the true best worst margin with it. Here it is first held
-against tests/oracles.py:enumerate_limiter (every network at every corner) on reduced series, then the design
-against it on 64 wide specifications drawn with a fixed seed from a copy of tools/benchmark.py:wide_spec with
-R9..R13 on E96 or E192 (R7 on E24 or E96; 16 of them with one resistor pinned): 33 have a solution, 31 have
-no network at all; none is skipped. On each, the design finds the same smallest R7 (or, like the reference,
-nothing), a worst margin within limiter.GAP of the reference's best and not above it, and a bound on the best
-margin that the reference's best does not exceed; the networks of both hold at every corner of the oracle.
-The whole file takes about 20 s on one core (the design about two thirds of it).
+design; its bounds hold for every network of a box and are exact on one network (its docstring has the proofs),
+so it returns the true smallest R7 and the true best worst margin with it. Here it is first held against
+tests/oracles.py:enumerate_limiter (every network at every corner) on reduced series, then the design against it
+on 64 wide specifications drawn with a fixed seed from tests/limiter_specs.py:wide_spec (the benchmark's
+generator) with R9..R13 on E96 or E192 (R7 on E24 or E96; 16 of them with one resistor pinned): 33 have a
+solution, 31 have no network at all; none is skipped. On each, the design finds the same smallest R7 (or, like
+the reference, nothing), a worst margin within limiter.GAP of the reference's best and not above it, and a bound
+on the best margin that the reference's best does not exceed; the networks of both hold at every corner of the
+oracle. The whole file takes about 20 s on one core (the design about two thirds of it).
 """
 import numpy as np
 import pytest
 from exact_limiter import exact_limiter
+from limiter_specs import reduced_spec, wide_spec
 
 from handbook.design import limiter
 from handbook.design.schema import defaults
@@ -22,27 +23,6 @@ from handbook.design.solvers import Infeasible
 from oracles import enumerate_limiter, limiter_corners
 
 SEED, WIDE_SPECS = 18, 64
-
-
-def _reduced_spec(rng):
-    """The reduced family of test_limiter_search.py and tools/benchmark.py: E12 dividers over half a decade
-    (up to two pinned), R9 E6 or E12 over two decades, bias, offset current and current limit varied."""
-    i_no = float(rng.uniform(0.1, 5))
-    spec = dict(i_no_trip=i_no, i_must_trip=i_no * float(rng.uniform(1.6, 4)),
-                resistor_tolerance=float(rng.choice([0.001, 0.01, 0.02])), r7_tolerance=float(rng.choice([0.01, 0.05])),
-                zener_voltage=float(rng.choice([5.6, 8.2, 12.0])), zener_tolerance=float(rng.choice([0.02, 0.05])),
-                offset=float(rng.uniform(0, 0.02)), input_bias=float(rng.choice([0.0, 100e-9, 500e-9])),
-                min_margin=float(rng.choice([0.0, 0.02])), input_headroom=float(rng.choice([1.0, 2.0])),
-                input_offset_current=float(rng.choice([0.0, 50e-9, 150e-9])),
-                divider_current_max=float(rng.choice([1e-3, 3e-3, 0.1])), r7_series="E12", r7_min=0.01, r7_max=100.0,
-                r9_series=str(rng.choice(["E6", "E12"])), r9_min=10.0 ** int(rng.integers(1, 4)))
-    spec["r9_max"] = spec["r9_min"] * 100
-    for n in ("r10", "r11", "r12", "r13"):
-        low = float(rng.choice([1e3, 2.2e3, 4.7e3, 10e3, 22e3]))
-        spec.update({f"{n}_series": "E12", f"{n}_min": low, f"{n}_max": low * 3})
-    for n in rng.choice(["r10", "r11", "r12", "r13"], size=int(rng.integers(0, 3)), replace=False):
-        spec[str(n)] = float(rng.choice([1e3, 2.2e3, 4.7e3, 10e3]))
-    return spec
 
 
 def _biased_spec(rng):
@@ -64,34 +44,12 @@ def _biased_spec(rng):
     return spec
 
 
-def _wide_spec(rng):
-    """tools/benchmark.py:wide_spec (copied, not imported), the dividers on E96 or E192 only: every tolerance,
-    zener, op-amp figure and limit varied, each divider resistor over half a decade to three decades, a third
-    of the specs with one resistor pinned."""
-    i_no = float(10 ** rng.uniform(-1.3, 1))
-    sp = dict(i_no_trip=i_no, i_must_trip=i_no * float(rng.uniform(1.3, 4)), min_margin=float(rng.choice([0.0, 0.02, 0.05])),
-              resistor_tolerance=float(rng.choice([0.001, 0.005, 0.01, 0.02])),
-              r7_tolerance=float(rng.choice([0.01, 0.02, 0.05])), zener_voltage=float(rng.uniform(3.3, 30)),
-              zener_tolerance=float(rng.choice([0.02, 0.05])), zener_tc=float(rng.uniform(0, 0.02)),
-              temp_span=float(rng.uniform(20, 80)), offset=float(rng.uniform(0, 0.01)),
-              input_bias=float(10 ** rng.uniform(-8, -5.3)), input_offset_current=float(10 ** rng.uniform(-9, -5.3)),
-              divider_current_max=float(10 ** rng.uniform(-3.3, -1.5)), input_headroom=float(rng.uniform(0.5, 2.5)),
-              r7_series=str(rng.choice(["E24", "E96"])))
-    for n in ("r9", "r10", "r11", "r12", "r13"):
-        low = float(10 ** rng.uniform(1, 4))
-        sp.update({f"{n}_series": str(rng.choice(["E96", "E192"])), f"{n}_min": low,
-                   f"{n}_max": low * float(10 ** rng.uniform(0.5, 3))})
-    if rng.uniform() < 0.3:
-        sp[str(rng.choice(["r9", "r10", "r11", "r12", "r13"]))] = float(np.round(10 ** rng.uniform(2, 5), -1))
-    return sp
-
-
 def _reduced_cases():
     rng = np.random.default_rng(2026)
-    cases = {f"reduced-{k}": _reduced_spec(rng) for k in range(8)}
+    cases = {f"reduced-{k}": reduced_spec(rng) for k in range(8)}
     rng = np.random.default_rng(6)
     cases.update({f"biased-{k}": _biased_spec(rng) for k in range(4)})
-    base = _reduced_spec(np.random.default_rng(7))
+    base = reduced_spec(np.random.default_rng(7))
     cases["no-bias-no-offset-current"] = {**base, "input_bias": 0.0, "input_offset_current": 0.0, "min_margin": 0.0}
     cases["margin-5-percent"] = {**base, "min_margin": 0.05, "input_bias": 500e-9, "input_offset_current": 150e-9}
     cases["no-solution"] = {**base, "i_must_trip": base["i_no_trip"] * 1.1, "min_margin": 0.02}
@@ -102,7 +60,7 @@ def _reduced_cases():
 
 REDUCED = _reduced_cases()
 _rng = np.random.default_rng(SEED)
-WIDE = [_wide_spec(_rng) for _ in range(WIDE_SPECS)]
+WIDE = [wide_spec(_rng, divider_series=("E96", "E192")) for _ in range(WIDE_SPECS)]
 ISSUE_18 = dict(i_no_trip=1.5375553447469856, i_must_trip=3.759833528645647, min_margin=0.05, resistor_tolerance=0.005,
                 r7_tolerance=0.02, zener_voltage=20.454639911244172, zener_tolerance=0.02, zener_tc=0.01899320811016074,
                 temp_span=59.00419989365312, offset=0.032682535995104574, input_bias=5e-06, input_offset_current=5e-06,
