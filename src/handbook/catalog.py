@@ -77,11 +77,9 @@ def _case(src, ident: str, places: dict) -> dict:
 def _same_fact_places(src) -> dict:
     """Erratum id -> 'where: what' of every record of ``src`` that names it as ``same_fact``."""
     places: dict = {}
-    evaluated = {r["id"]: r for r in src.evaluate()}
     for c in src.claims():
         if c.same_fact:
-            r = evaluated[c.id]
-            places.setdefault(c.same_fact, []).append(f"{c.where}: {c.quantity}, printed {r['printed_text']}")
+            places.setdefault(c.same_fact, []).append(f"{c.where}: {c.quantity}, printed {c.printed}")
     for t in src.errata:
         if t.same_fact:
             places.setdefault(t.same_fact, []).append(f"{t.source}: {t.what}")
