@@ -99,8 +99,10 @@ def cmd_errata(args) -> int:
     from .report.tables import ERRATA_KINDS
 
     if args.reading_notes:
-        notes = [r for r in catalog.reading_notes() if not args.source or args.source.lower() in
-                 (r["source"] + " " + r["id"]).lower()]
+        try:
+            notes = _filtered(catalog.reading_notes(), args, lambda r: "reading note", ("reading note",))
+        except _BadStatus as exc:
+            return _usage_error(args, str(exc))
         if args.json:
             print(json.dumps(notes, indent=1))
         else:
