@@ -11,6 +11,7 @@ note's board makes true must not appear in any re-run's rendered page (prose and
 from __future__ import annotations
 
 import atexit
+import functools
 import json
 import re
 from pathlib import Path
@@ -65,20 +66,18 @@ NOTE_ONLY = {
 
 ROLE = re.compile(r"\{glue(?::(text|md))?\}`([^`:]+)(?::([^`]*))?`")
 _runs: dict[str, Path] = {}
-_kernel: list = []  # one kernel per test process, shared by its re-runs (see rerun)
 
 
+@functools.cache
 def _shared_kernel():
     """A kernel this process starts once and every re-run reuses: starting one and importing the handbook,
     sympy and matplotlib into it costs about 3 s, as much as most chapters take to run."""
-    if not _kernel:
-        from jupyter_client.manager import KernelManager
+    from jupyter_client.manager import KernelManager
 
-        km = KernelManager(kernel_name="python3")
-        km.start_kernel()
-        atexit.register(km.shutdown_kernel, now=True)
-        _kernel.append(km)
-    return _kernel[0]
+    km = KernelManager(kernel_name="python3")
+    km.start_kernel()
+    atexit.register(km.shutdown_kernel, now=True)
+    return km
 
 
 def _fresh(km, cwd: Path) -> None:
