@@ -25,8 +25,13 @@ book: $(STAMP)
 
 # Unit tests and notebooks in one pytest on both cores (pytest-xdist): every test is scheduled on its own,
 # a notebook's cells (nbval, one kernel per notebook) stay together on one worker (conftest.py).
-test: $(STAMP) system
-	$(BIN)/python -m pytest -n 2 --dist loadscope tests book
+# The Python packages and Debian's packages install side by side. Python may write its bytecode caches
+# during the run even where the environment sets PYTHONDONTWRITEBYTECODE (as CI's machines do): every
+# kernel, worker and command the tests start would otherwise compile sympy, matplotlib and the rest
+# from source again, about a minute of the run.
+test:
+	@$(MAKE) --no-print-directory -j2 $(STAMP) system
+	env -u PYTHONDONTWRITEBYTECODE $(BIN)/python -m pytest -n 2 --dist loadscope tests book
 
 test-unit: $(STAMP)
 	$(BIN)/python -m pytest tests

@@ -66,43 +66,52 @@ def _console_errors(console):
     return [m[:200] for m in messages if re.search(r"Uncaught|Error|Failed|error", m)]
 
 
-def _complete(dom, console):
+def _complete(soup, console):
     """Typeset and quiet: the page finished loading inside the virtual-time budget."""
-    soup = BeautifulSoup(dom, "html.parser")
     return soup.find("h1") and all(el.find("mjx-container") for el in soup.select(".math")) and not _console_errors(console)
 
 
 @pytest.fixture(scope="module")
 def rendered(site):
+    """Every page of the table of contents as Chromium left it: the page's file, its DOM parsed once (html.parser
+    takes about a second on a long chapter, so the tests share one parse) and the console's lines."""
     def one(doc):
         page = site / f"{doc}.html"
         for budget in ("20000", "60000"):  # a busy machine can starve one load: a second, longer try before judging
             r = chromium("--dump-dom", f"--virtual-time-budget={budget}", page.as_uri())
             console = [l for l in r.stderr.splitlines() if ":CONSOLE" in l]
-            if _complete(r.stdout, console):
+            soup = BeautifulSoup(r.stdout, "html.parser")
+            if _complete(soup, console):
                 break
-        return doc, (page, r.stdout, console)
+        return doc, (page, soup, console)
     with ThreadPoolExecutor(2) as pool:
         return dict(pool.map(one, toc_files()))
 
 
-def test_every_page_loads(rendered):
-    for doc, (_page, dom, _) in rendered.items():
-        soup = BeautifulSoup(dom, "html.parser")
+@pytest.fixture(scope="module")
+def parsed(rendered):
+    """Each page's file, its soup and the text a reader sees (code, scripts and styles left out)."""
+    return {doc: (page, soup, _reader_text(soup)) for doc, (page, soup, _) in rendered.items()}
+
+
+def _reader_text(soup):
+    """The page's text outside pre, code, script and style elements, without changing the soup."""
+    hidden = ("pre", "code", "script", "style")
+    return "".join(s for s in soup.strings if not any(p.name in hidden for p in s.parents))
+
+
+def test_every_page_loads(parsed):
+    for doc, (_page, soup, _) in parsed.items():
         assert soup.find("h1"), f"{doc}: no title rendered"
         assert soup.find("main") or soup.find("article"), f"{doc}: no content"
 
 
-def test_math_is_typeset(rendered):
+def test_math_is_typeset(parsed):
     typeset = 0
-    for doc, (_, dom, _) in rendered.items():
-        soup = BeautifulSoup(dom, "html.parser")
+    for doc, (_, soup, text) in parsed.items():
         for el in soup.select(".math"):
             assert el.find("mjx-container"), f"{doc}: math left as raw TeX: {el.get_text()[:80]!r}"
             typeset += 1
-        for pre in soup.select("pre, code, script"):
-            pre.decompose()
-        text = soup.get_text()
         assert not re.search(r"\\\(|\\\[|\$\$", text), f"{doc}: raw TeX delimiters in the text"
     assert typeset > 100
 
@@ -111,40 +120,33 @@ def test_math_is_typeset(rendered):
 CONTROL = re.compile(r"[\x00-\x08\x09\x0b\x0c\x0e-\x1f\x7f]")
 
 
-def test_math_has_no_mathjax_errors_and_text_no_control_characters(rendered):
+def test_math_has_no_mathjax_errors_and_text_no_control_characters(parsed):
     """MathJax puts an error inside its own container (so "typeset" alone passes it): look for the error
     markers themselves, and for control characters in what a reader sees."""
-    for doc, (_, dom, _) in rendered.items():
-        soup = BeautifulSoup(dom, "html.parser")
+    for doc, (_, soup, text) in parsed.items():
         errors = soup.select("[data-mjx-error], mjx-merror, merror")
         assert not errors, f"{doc}: MathJax error: {errors[0].get('data-mjx-error') or errors[0].get_text()[:80]!r}"
-        for el in soup.select("pre, code, script, style"):
-            el.decompose()
-        text = soup.get_text()
         bad = CONTROL.search(text)
         assert not bad, f"{doc}: control character {bad.group()!r} near {text[max(0, bad.start() - 40):bad.start() + 20]!r}"
 
 
-def test_tables_are_rendered(rendered):
+def test_tables_are_rendered(parsed):
     """A Markdown table that failed to parse shows up as raw '|---|' text (a '|' inside a cell does that)."""
     tables = 0
-    for doc, (_, dom, _) in rendered.items():
-        soup = BeautifulSoup(dom, "html.parser")
+    for doc, (_, soup, text) in parsed.items():
         tables += len(soup.select("main table, article table"))
-        for el in soup.select("pre, code, script"):
-            el.decompose()
-        assert "|---|" not in soup.get_text().replace(" ", ""), f"{doc}: a Markdown table was left as text"
+        assert "|---|" not in text.replace(" ", ""), f"{doc}: a Markdown table was left as text"
     assert tables > 40
 
 
-def test_every_figure_is_on_its_page(rendered):
-    for doc, (page, dom, _) in rendered.items():
+def test_every_figure_is_on_its_page(parsed):
+    for doc, (page, soup, _) in parsed.items():
         source = ROOT / f"{doc}.ipynb"
         made = 0
         if source.exists():
             nb = json.loads(source.read_text())
             made = sum("image/png" in o.get("data", {}) for c in nb["cells"] for o in c.get("outputs", []))
-        imgs = [i for i in BeautifulSoup(dom, "html.parser").select("main img, article img")
+        imgs = [i for i in soup.select("main img, article img")
                 if "_images/" in i.get("src", "")]
         assert len(imgs) == made, f"{doc}: {made} figures made, {len(imgs)} on the page"
         for img in imgs:
@@ -152,17 +154,17 @@ def test_every_figure_is_on_its_page(rendered):
             assert f.exists() and f.stat().st_size > 1000, f"{doc}: missing figure {img['src']}"
 
 
-def test_internal_links_resolve(site, rendered):
-    ids = {}
+def test_internal_links_resolve(site, parsed):
+    ids = {page: {t.get("id") for t in soup.find_all(id=True)} for page, soup, _ in parsed.values()}
 
-    def anchors(path):
+    def anchors(path):  # a page outside the table of contents (the index, the search page): its file
         if path not in ids:
             ids[path] = {t.get("id") for t in BeautifulSoup(path.read_text(), "html.parser").find_all(id=True)}
         return ids[path]
 
     checked = 0
-    for doc, (page, dom, _) in rendered.items():
-        for a in BeautifulSoup(dom, "html.parser").select("a[href]"):
+    for doc, (page, soup, _) in parsed.items():
+        for a in soup.select("a[href]"):
             href = a["href"]
             if re.match(r"^[a-z]+:", href) and not href.startswith("file:"):
                 continue  # external
