@@ -7,7 +7,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: book test test-unit test-notebooks notebooks system clean
+.PHONY: book pdf test test-unit test-notebooks notebooks system clean
 
 $(STAMP): requirements.txt constraints.txt pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -22,6 +22,11 @@ book: $(STAMP)
 	@key=$$(cat $$(find src/handbook -name '*.py' | sort) requirements.txt constraints.txt | sha256sum | cut -c1-16); \
 	if [ "$$(cat _build/.src-key 2>/dev/null)" != "$$key" ]; then rm -rf _build/.jupyter_cache _build/.doctrees; fi; \
 	$(BIN)/jupyter-book build . -W -n --keep-going && echo "$$key" > _build/.src-key
+
+# The book as one PDF (_build/pdf/handbook.pdf): the single-page HTML build of the committed outputs, printed by
+# Debian's Chromium with the math typeset, a document outline and page numbers (tools/build_pdf.py).
+pdf: $(STAMP) system
+	$(BIN)/python tools/build_pdf.py
 
 # Unit tests and notebooks in one pytest on both cores (pytest-xdist): every test is scheduled on its own,
 # a notebook's cells (nbval, one kernel per notebook) stay together on one worker (conftest.py).

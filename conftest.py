@@ -12,10 +12,10 @@ The longest units go out first, so that neither worker is left with a long one a
 import pytest
 
 #: test files kept on one worker because their module-scoped fixture is expensive to build twice
-TOGETHER = ("tests/test_browser.py", "tests/design/converter/", "tests/report/test_plots.py",
+TOGETHER = ("tests/test_browser.py", "tests/test_pdf.py", "tests/design/converter/", "tests/report/test_plots.py",
             "tests/design/limiter/test_limiter_exact_wide.py")  # its last test counts what the others found
 #: units sent first, longest first (measured on the 2-core machine); the rest follow in collection order
-FIRST = ("tests/test_browser.py", "tests/design/limiter/test_limiter_exact_wide.py",
+FIRST = ("tests/test_browser.py", "tests/test_pdf.py", "tests/design/limiter/test_limiter_exact_wide.py",
          "tests/design/limiter/test_limiter_search.py::test_the_search",
          "tests/design/converter/", "tests/design/limiter/test_limiter_search.py::test_every_design",
          "tests/design/test_fuzz_specs.py")

@@ -130,6 +130,21 @@ def test_math_has_no_mathjax_errors_and_text_no_control_characters(parsed):
         assert not bad, f"{doc}: control character {bad.group()!r} near {text[max(0, bad.start() - 40):bad.start() + 20]!r}"
 
 
+#: units as ASCII stand-ins where a person reads them: 10 uF, 2 ohm, 4.7 kohm, +-5 %, -90 deg
+ASCII_UNITS = re.compile(r"(?<![\w.])\d+(?:\.\d+)?\s?(?:u[FAHVWs]|[kM]?ohms?|[mk]?Ohm|deg)\b|\+-\s?\d|\+/-\s?\d")
+
+
+def test_units_are_written_as_a_person_reads_them(parsed):
+    """µ, Ω, ± and ° in everything a reader sees, outputs included (a table, a printed line): only what the reader
+    types (a code cell's source, a code span) keeps ASCII."""
+    for doc, (_, soup, _) in parsed.items():
+        hidden = ("script", "style", "code")
+        text = " ".join(s for s in soup.strings if not any(p.name in hidden or "cell_input" in (p.get("class") or [])
+                                                           for p in s.parents))
+        bad = [text[max(0, m.start() - 50):m.end() + 10] for m in ASCII_UNITS.finditer(text)]
+        assert not bad, f"{doc}: ASCII units in what a reader sees: {bad[:5]}"
+
+
 def test_tables_are_rendered(parsed):
     """A Markdown table that failed to parse shows up as raw '|---|' text (a '|' inside a cell does that)."""
     tables = 0

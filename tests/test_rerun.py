@@ -51,8 +51,8 @@ RERUNS = {
 # the parameters cell holds (chapter -> (token, a phrase of the sentence, why))
 FIXED = {
     "an94002/commutation_delay": [("22 µA", "CAP-CD table lists a discharge", "the datasheet's own column, quoted")],
-    "design/current_limiter": [("1.8002 A", "The earlier version of this design fixed the corner",
-                                "a counterexample to an earlier version, at the default spec, named as such")],
+    "design/current_limiter": [("1.8002 A", "A shortcut that fixes the corner of the highest trip voltage",
+                                "a counterexample to a shortcut, at the default spec, named as such")],
     "lm4651/equations": [("4 Ω", "SPICE puts the corner", "the simulation runs both loads, 4 and 8 ohm, always"),
                          ("4 Ω", "The residue at the load is", "the 4 ohm run of the two"),
                          ("4 Ω", "Two runs per load", "the two loads simulated")],

@@ -90,7 +90,7 @@ class Param:
 
 @dataclass(frozen=True)
 class Fact:
-    """A figure a source relies on without printing it, with where it was read (datasheet_facts.md)."""
+    """A figure a source relies on without printing it, with the datasheet it was read from."""
 
     value: Any
     cite: str

@@ -91,7 +91,7 @@ def _limiter() -> tuple[Param, ...]:
 def _converter() -> tuple[Param, ...]:
     """The TCA5600/TCF5600 dc/dc converter (excerpt, figures 13 and 14, eq 1 to 6a) and its coil's limits.
 
-    No public copy of the TCA5600's electrical characteristics was found (datasheet_facts.md): V12(H),
+    No public copy of the TCA5600's electrical characteristics was found (Motorola TCA5600/TCF5600): V12(H),
     V_CE(sat) and V_F are the converter chapter's assumed figures, the operating point its assumed board."""
     return (
         Param(name="v_supply_min", default=8.0, unit="V", low=0.5, high=60.0,

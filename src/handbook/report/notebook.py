@@ -31,9 +31,12 @@ def setup() -> None:
 
 
 def show_equation(eq) -> None:
-    """Printed form, derived form, and the verdict of the symbolic check."""
+    """Printed form, derived form, and the verdict of the symbolic check (units as a person reads them)."""
+    from .tables import readable
+
     s = eq.summary()
-    display(Markdown(f"**{eq.title}** ({eq.source})  \nprinted:"))
+    s["note"] = readable(s["note"])
+    display(Markdown(readable(f"**{eq.title}** ({eq.source})  \nprinted:")))
     display(Math(s["printed_latex"]))
     if s.get("empirical"):
         # no circuit law: the datasheet does not show the circuit; the check is against its own figures
@@ -44,7 +47,7 @@ def show_equation(eq) -> None:
         verdict = "reproduces every figure" if s["agrees"] else "**misses figures the datasheet prints**"
         display(Markdown(f"*Check:* {verdict}; {dims}. {s['note']}"))
         return
-    display(Markdown(f"derived ({eq.law}):"))
+    display(Markdown(readable(f"derived ({eq.law}):")))
     display(Math(s["derived_latex"]))
     dims = "dimensions consistent" if s["dimensions_ok"] else "**dimension error**"
     verdict = "agrees" if s["agrees"] else "agrees (constant rounded)" if s["rounded_constants"] else "**differs**"
@@ -52,10 +55,14 @@ def show_equation(eq) -> None:
 
 
 def glue_all(**values) -> None:
-    """Glue numbers for the prose (myst-nb), as plain Python floats so their repr is stable."""
+    """Glue numbers for the prose (myst-nb), as plain Python floats so their repr is stable; texts with their units
+    as a person reads them."""
     from myst_nb import glue
 
+    from .tables import readable
+
     for name, v in values.items():
+        v = readable(v) if isinstance(v, str) else v
         glue(name, float(v) if isinstance(v, (int, float, np.floating, np.integer)) else v, display=False)
 
 
@@ -85,4 +92,6 @@ def note_only(name: str, text: str, note: bool, otherwise: str = "") -> None:
     """
     from myst_nb import glue
 
-    glue(name, Markdown(text if note else otherwise), display=False)
+    from .tables import readable
+
+    glue(name, Markdown(readable(text if note else otherwise)), display=False)

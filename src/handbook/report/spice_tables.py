@@ -11,7 +11,7 @@ from ..core.units import eng
 from ..spice import checks
 from ..spice.circuit import evaluate
 from ..spice.runner import SpiceError, SpiceUnavailable
-from .tables import table
+from .tables import readable, table
 
 
 def chapter_table(*circuits, by_circuit: bool | None = None):
@@ -44,7 +44,7 @@ def rows_table(rows: list[dict], equation_head: str = "equation", lead: dict | N
     why = "\n".join(f"- {''.join(t + ', ' for t in name(r))}*{r['quantity']}*, {_tolerance(r['rtol'])}"
                     + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity" else "")
                     + f": {r['why']}." for r in rows)
-    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + why)
+    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + readable(why))
 
 
 def _tolerance(rtol: float) -> str:

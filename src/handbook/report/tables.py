@@ -21,7 +21,7 @@ BADGE = {"exact": "exact", "rounding": "rounding", "truncated": "truncated (last
 _READABLE = ((re.compile(r"(\d)\s?u([FAHVWsm]|Ohm)\b"), "\\1 µ\\2"), (re.compile(r"(\d)\s?kohm\b"), "\\1 kΩ"),
              (re.compile(r"(\d)\s?Mohm\b"), "\\1 MΩ"), (re.compile(r"(\d)\s?mOhm\b"), "\\1 mΩ"),
              (re.compile(r"(\d)\s?ohm\b"), "\\1 Ω"), (re.compile(r"\+-\s?"), "±"), (re.compile(r"µOhm"), "µΩ"),
-             (re.compile(r"([/*])u([FAH])\b"), "\\1µ\\2"))
+             (re.compile(r"([/*])u([FAH])\b"), "\\1µ\\2"), (re.compile(r"(\d)\s?deg\b"), "\\1°"))
 
 
 def readable(text: str) -> str:
@@ -75,8 +75,9 @@ ERRATA_KINDS = {"misprint": "misprint", "inconsistent": "inconsistent", "wrong m
 
 
 def table(header: list[str], rows: list[list]) -> Markdown:
-    lines = ["| " + " | ".join(_cell(h) for h in header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(_cell(c) for c in row) + " |" for row in rows]
+    """A Markdown table, every cell's units as a person reads them (:func:`readable`)."""
+    lines = ["| " + " | ".join(_cell(readable(h)) for h in header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(_cell(readable(c)) for c in row) + " |" for row in rows]
     return Markdown("\n".join(lines))
 
 
@@ -89,7 +90,7 @@ def design_table(table_name: str, result) -> Markdown:
 
     if isinstance(result, Infeasible):
         extra = "; ".join(achievable_text(table_name, k, v) for k, v in result.achievable.items() if v is not None)
-        return Markdown(f"**Cannot be met** (`{table_name}`): {result}  \nWhat can be met: {extra or 'nothing nearby'}")
+        return Markdown(readable(f"**Cannot be met** (`{table_name}`): {result}  \nWhat can be met: {extra or 'nothing nearby'}"))
     rows = [[out.label, shown_value(getattr(result, out.key), out.unit)] for out in OUTPUTS[table_name]]
     return table(["result", "value"], rows)
 

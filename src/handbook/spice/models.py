@@ -1,5 +1,5 @@
 """Device models for ngspice, written in the project from the datasheet figures gathered in
-``shared/appnotes/datasheet_facts.md`` (no vendor macro-model is copied). One function per device,
+the parts' public datasheets (no vendor macro-model is copied). One function per device,
 returning its netlist lines; every number is cited where it is set. Where a datasheet gives no figure the
 model needs, the value is an assumption and says so.
 """
@@ -14,10 +14,10 @@ T25 = 298.15  # K: the datasheets' 25 C, the models' nominal temperature (TNOM)
 # ----------------------------------------------------------------------------------------------
 # BZX79-C8V2 zener
 
-#: BZX79-C8V2: V_Z min / nominal / max at I_Z = 5 mA (datasheet_facts.md, BZX79-C8V2)
+#: BZX79-C8V2: V_Z min / nominal / max at I_Z = 5 mA (BZX79-C8V2 datasheet)
 BZX79_C8V2_VZ = (7.7, 8.2, 8.7)
-BZX79_C8V2_IZT = 5e-3  # A: the test current of V_Z (datasheet_facts.md)
-BZX79_C8V2_RZ = 15.0  # ohm: dynamic resistance, datasheet maximum "below 15 ohm" (datasheet_facts.md)
+BZX79_C8V2_IZT = 5e-3  # A: the test current of V_Z (BZX79 datasheet)
+BZX79_C8V2_RZ = 15.0  # ohm: dynamic resistance, datasheet maximum "below 15 ohm" (BZX79 datasheet)
 
 
 def bzx79_c8v2(name: str = "BZX79C8V2", v_z: float = BZX79_C8V2_VZ[1], r_z: float = BZX79_C8V2_RZ) -> list[str]:
@@ -28,34 +28,34 @@ def bzx79_c8v2(name: str = "BZX79C8V2", v_z: float = BZX79_C8V2_VZ[1], r_z: floa
     25 C); RS is chosen so that the two add up to ``r_z`` (default the datasheet's 15 ohm maximum: the
     worst case for how far V_Z moves with the current the dividers draw). Pass ``v_z`` = 7.7 or 8.7
     (:data:`BZX79_C8V2_VZ`) or any tolerance corner. The temperature coefficient (+0.03 to +0.08 %/K,
-    datasheet_facts.md) is not modelled: the circuits here fold the drift into ``v_z``.
+    BZX79 datasheet) is not modelled: the circuits here fold the drift into ``v_z``.
     """
     rs = r_z - K_Q * T25 / BZX79_C8V2_IZT
     if rs <= 0 or v_z <= 0:
         raise ValueError(f"zener model: r_z = {r_z:g} ohm must exceed {K_Q * T25 / BZX79_C8V2_IZT:.3g} ohm, v_z > 0")
     bv = v_z - BZX79_C8V2_IZT * rs
-    return [f"* BZX79-C8V2: V_Z = {v_z:.6g} V at 5 mA, r_z = {r_z:g} ohm (datasheet_facts.md: 7.7..8.7 V, < 15 ohm)",
+    return [f"* BZX79-C8V2: V_Z = {v_z:.6g} V at 5 mA, r_z = {r_z:g} ohm (BZX79 datasheet: 7.7..8.7 V, < 15 ohm)",
             f".model {name} D(BV={bv:.6g} IBV={BZX79_C8V2_IZT:g} RS={rs:.6g} IS=1e-14 TNOM=25)"]
 
 
 # ----------------------------------------------------------------------------------------------
 # BC557 PNP
 
-#: BC557: V_BE(on) min / typ / max at I_C = 2 mA (datasheet_facts.md, "one maker")
+#: BC557: V_BE(on) min / typ / max at I_C = 2 mA (BC557 datasheet, one maker)
 BC557_VBE = (0.55, 0.62, 0.70)
 BC557_IC = 2e-3  # A: the current of that figure
-BC557_BF = 200.0  # assumption: no current gain is in datasheet_facts.md; it moves the base current only
+BC557_BF = 200.0  # assumption: no current gain is taken from a datasheet; it moves the base current only
 
 
 def bc557(name: str = "BC557", v_be: float = BC557_VBE[1]) -> list[str]:
     """`.model` of a BC557 whose V_BE is ``v_be`` at I_C = 2 mA and 25 C (IS = 2 mA / exp(V_BE / V_T)).
 
     Its temperature behaviour is SPICE's silicon default (EG = 1.11 eV, XTI = 3), not tuned: that gives
-    dV_BE/dT of about -1.9 mV/K at 2 mA, an independent check of the -2 mV/K rule of thumb (no datasheet
-    in datasheet_facts.md gives a coefficient). No Early voltage and no resistances (none is in the facts).
+    dV_BE/dT of about -1.9 mV/K at 2 mA, an independent check of the -2 mV/K rule of thumb (no BC557
+    datasheet consulted gives a coefficient). No Early voltage and no resistances (none is in the datasheets).
     """
     is_ = BC557_IC / math.exp(v_be / (K_Q * T25))
-    return [f"* BC557: V_BE(on) = {v_be:.6g} V at 2 mA, 25 C (datasheet_facts.md: 0.55 / 0.62 / 0.70 V); "
+    return [f"* BC557: V_BE(on) = {v_be:.6g} V at 2 mA, 25 C (BC557 datasheet: 0.55 / 0.62 / 0.70 V); "
             f"BF = {BC557_BF:g} assumed",
             f".model {name} PNP(IS={is_:.6g} BF={BC557_BF:g} BR=5 NF=1 EG=1.11 XTI=3 TNOM=25)"]
 
@@ -63,14 +63,14 @@ def bc557(name: str = "BC557", v_be: float = BC557_VBE[1]) -> list[str]:
 # ----------------------------------------------------------------------------------------------
 # LM358 (one amplifier), behavioural
 
-#: LM358 figures. From datasheet_facts.md: the offset (9 mV max over temperature) and the input
+#: LM358 figures. From the LM358 datasheet (TI SLOS068): the offset (9 mV max over temperature) and the input
 #: common-mode limit (0 to V_CC - 2 V over temperature). The bias current is the LM358 datasheet's (TI
 #: SLOS068) 500 nA over temperature, as the design's spec cites it. The rest are assumptions (typical LM358
-#: figures, not in datasheet_facts.md): they set how fast and how far the output moves, not where it trips.
+#: figures, not from the datasheet): they set how fast and how far the output moves, not where it trips.
 LM358 = {
-    "offset_max": 9e-3,  # V, datasheet_facts.md: 9 mV max over temperature
+    "offset_max": 9e-3,  # V, LM358 datasheet: 9 mV max over temperature
     "bias": 500e-9,  # A, LM358 datasheet (TI SLOS068), over temperature; out of the pins (PNP inputs)
-    "cm_headroom": 2.0,  # V, datasheet_facts.md: inputs 0 to V_CC - 2 V over temperature
+    "cm_headroom": 2.0,  # V, LM358 datasheet: inputs 0 to V_CC - 2 V over temperature
     "a0": 1e5,  # V/V, assumption: 100 V/mV
     "gbw": 0.7e6,  # Hz, assumption: unity-gain bandwidth 0.7 MHz
     "v_oh_drop": 1.5,  # V, assumption: the output goes no higher than V_CC - 1.5 V
@@ -84,7 +84,7 @@ def lm358(name: str = "LM358", stuck: str = "low") -> list[str]:
     into the circuit, A; negative for a current into the pin).
 
     One dominant pole (A0 and GBW of :data:`LM358`), the output clamped to [V_ol, V_CC - 1.5 V] without
-    wind-up. **Input common-mode limit**: while either input is within 2 V of V_CC (datasheet_facts.md, over
+    wind-up. **Input common-mode limit**: while either input is within 2 V of V_CC (LM358 datasheet, over
     temperature) the datasheet no longer says what the output does; the model then ignores the inputs and
     drives the output to one rail (``stuck`` = "low" or "high"), so a simulation shows the comparison lost
     instead of a plausible answer. Which way a real LM358 goes is not specified: the choice is an
@@ -100,7 +100,7 @@ def lm358(name: str = "LM358", stuck: str = "low") -> list[str]:
     ok = "v(ok,vee)"
     return [
         f"* LM358, behavioural: offset vos, bias ib (500 nA max, TI SLOS068), common-mode limit V_CC - "
-        f"{m['cm_headroom']:g} V (datasheet_facts.md); A0, GBW and output swing assumed",
+        f"{m['cm_headroom']:g} V (LM358 datasheet); A0, GBW and output swing assumed",
         f".subckt {name} inp inn vcc vee out params: vos=0 ibp={m['bias']:g} ibn={m['bias']:g}",
         "Ibp vcc inp {ibp}",
         "Ibn vcc inn {ibn}",
@@ -118,7 +118,7 @@ def lm358(name: str = "LM358", stuck: str = "low") -> list[str]:
 # BD434 PNP (series regulator T1 of the AN94002 speed control)
 
 #: BD434: AN94002 2.2 names the part and asks for at least 1 V across R7 and T1 for linear control;
-#: datasheet_facts.md gives no figure for it. Every value below is an assumption, of the order that public
+#: no BD434 datasheet figure is used for it. Every value below is an assumption, of the order that public
 #: BD433-BD438 datasheets print (h_FE at least 85 at 0.5 A and 50 at 2 A, V_CE(sat) up to 0.5 V at 2 A).
 BD434 = {"bf": 85.0, "is": 1e-12, "vaf": 50.0, "ikf": 3.0, "rb": 2.0, "re": 0.05, "rc": 0.1}
 
@@ -131,7 +131,7 @@ def bd434(name: str = "BD434", **figures) -> list[str]:
     if unknown:
         raise KeyError(f"BD434 figure(s) {', '.join(sorted(unknown))}; known: {', '.join(BD434)}")
     m = {**BD434, **figures}
-    return [f"* BD434 PNP: assumed figures, not from datasheet_facts.md (BF {m['bf']:g}: h_FE of the order of the "
+    return [f"* BD434 PNP: assumed figures, not from a datasheet (BF {m['bf']:g}: h_FE of the order of the "
             "BD43x datasheets at 0.5 A)",
             f".model {name} PNP(IS={m['is']:g} BF={m['bf']:g} NF=1 VAF={m['vaf']:g} IKF={m['ikf']:g} BR=5 RB={m['rb']:g} "
             f"RE={m['re']:g} RC={m['rc']:g} CJE=200p CJC=100p TF=20n)"]

@@ -26,7 +26,7 @@ low-pass, -45 degrees at f_z = 1 / (2 pi R1 C8). That checks the branch as wired
 loop's stability: the note gives no criterion for it and figure 1, which would show where R1 and C8 sit,
 is lost.
 
-The OTA (TDA5144 datasheet, June 1994, via datasheet_facts.md): transfer gain 0.3 S, sinks at most
+The OTA (TDA5144 datasheet, June 1994): transfer gain 0.3 S, sinks at most
 40 mA, cannot pull its output below its saturation voltage (1.5 V typ, 2.1 V max); its inputs draw no
 current. A behavioural current source: I_sink = g_m (V_AMPIN- - V_AMPIN+), clipped to 0 .. 40 mA.
 """

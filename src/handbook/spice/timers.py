@@ -2,7 +2,7 @@
 CAP-DC (adaptive commutation delay, figure 4) and CAP-TI (watchdog).
 
 Each pin is a capacitor fed by the IC's switched current sources, which its comparators turn over at
-fixed levels. Currents and levels are the TDA5144 datasheet's (June 1994; ``datasheet_facts.md``);
+fixed levels. Currents and levels are the TDA5144 datasheet's (Philips, June 1994);
 the IC's logic is modelled, not copied, and these are the assumptions:
 
 * a current source is an ideal behavioural source (``B ... I=``): no output resistance, no leakage;
@@ -22,16 +22,16 @@ from ..sources.an94002.parts import PARTS
 from .circuit import Check, Circuit, Part, with_defaults
 from .runner import run
 
-TDA5144 = "TDA5144 datasheet (June 1994), via datasheet_facts.md"
+TDA5144 = "TDA5144 datasheet (June 1994)"
 #: CAP-CD discharge (sink) current and switching levels, min / typ / max (TDA5144 datasheet; the column
-#: pairing of its scrambled table is an interpretation, datasheet_facts.md)
+#: pairing of its scrambled table is an interpretation)
 CD_SINK = (10.6e-6, 16.2e-6, 22e-6)
 CD_LOW = (0.80, 0.875, 0.90)
 CD_HIGH = (2.3, 2.4, 2.55)
 CLAMP = 2e-3  # V: width of the soft stop of a source at a level (assumption, see the module text)
 BOARD = {ref: value for ref, _, value, *_ in PARTS}
 #: the TDA5144 datasheet's own start example, "t = 500 ms, thus C = 0.5/2 = 0.25 uF": a start period of 2 s
-#: per uF of CAP-ST (datasheet_facts.md). A printed rule, not this module's charge balance.
+#: per uF of CAP-ST (TDA5144 datasheet). A printed rule, not this module's charge balance.
 START_RULE = 2.0 / 1e-6  # s per F
 #: what a check between the equation's own levels can and cannot show (the timers' sanity checks)
 SANITY = ("by construction: the deck integrates the same constant current between the same levels the equation "

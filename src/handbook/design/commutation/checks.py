@@ -42,9 +42,9 @@ def capacitor_range(name: str, c: float, i_pin: float) -> list[str]:
         out.append(f"{name} = {c * 1e12:.3g} pF: the pin and board stray capacitance (a few pF; {STRAY * 1e12:g} pF "
                    f"assumed) shifts its timing by {STRAY / c:.0%}: choose slower timing or check on the board")
     if c > FILM_MAX:
-        out.append(f"{name} = {c * 1e6:.3g} uF is beyond film and ceramic values: an electrolytic's rated leakage "
-                   f"(commonly 0.01 C V or {LEAK_FLOOR * 1e6:g} uA, whichever is larger; an assumption, check the part) "
-                   f"rivals the pin's smallest current {i_pin * 1e6:.3g} uA (TDA5144 datasheet)")
+        out.append(f"{name} = {c * 1e6:.3g} µF is beyond film and ceramic values: an electrolytic's rated leakage "
+                   f"(commonly 0.01 C V or {LEAK_FLOOR * 1e6:g} µA, whichever is larger; an assumption, check the part) "
+                   f"rivals the pin's smallest current {i_pin * 1e6:.3g} µA (TDA5144 datasheet)")
     return out
 
 
@@ -96,9 +96,9 @@ def speed_limits(s: dict, start, watchdog) -> list[str]:
     cycle = ti_cycle(cap_ti, s["tolerance"])
     if cycle >= fast:
         which = "the chosen" if watchdog else "even the smallest allowed (2000 pF, AN94002 2.1.3)"
-        out.append(f"rpm_max = {s['rpm_max']:g} rpm: the commutation interval {fast * 1e6:.3g} us is shorter than "
-                   f"the {cycle * 1e6:.3g} us CAP-TI needs at least for its internal timing with {which} CAP-TI "
-                   f"(0.2 -> 0.3 V at 57 uA, back at 28 uA: TDA5144 datasheet, AN94002 2.1.3): the IC cannot "
+        out.append(f"rpm_max = {s['rpm_max']:g} rpm: the commutation interval {fast * 1e6:.3g} µs is shorter than "
+                   f"the {cycle * 1e6:.3g} µs CAP-TI needs at least for its internal timing with {which} CAP-TI "
+                   f"(0.2 -> 0.3 V at 57 µA, back at 28 µA: TDA5144 datasheet, AN94002 2.1.3): the IC cannot "
                    f"commutate this fast")
     if start is not None and start.period_min <= slow:
         out.append(f"the shortest start period {start.period_min * 1e3:.3g} ms is not longer than the commutation "

@@ -239,7 +239,7 @@ def design_cap_cd(s: dict) -> dict:
     below = series.at_most(s["series"], chosen * (1 - 1e-9))
     fail = verify(below, s)
     corner = fail["window_corner"]
-    why = (f"{below * 1e9:.3g} nF at {corner['cap'] * 1e9:.4g} nF with {corner['i'] * 1e6:.3g} uA swings "
+    why = (f"{below * 1e9:.3g} nF at {corner['cap'] * 1e9:.4g} nF with {corner['i'] * 1e6:.3g} µA swings "
            f"{fail['swing_at_rpm_min']:.3g} V at {s['rpm_min']:g} rpm, more than the "
            f"{corner['v_high']:g} V - {corner['v_low']:g} V window")
     return {"cap_cd": chosen, "bound": c_low, "check": check, "below": below, "why": why}

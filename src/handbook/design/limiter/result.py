@@ -28,7 +28,7 @@ from .explain import explain
 from .model import TABLE, checked
 from .search import GAP, solve
 
-#: the motor ICs' own output current limits, minimum (datasheet_facts: TDA5144 / TDA5143T datasheets)
+#: the motor ICs' own output current limits, minimum (TDA5144 datasheet, June 1994; TDA5143T datasheet)
 IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
 
 

@@ -6,7 +6,7 @@ from ..an94002.data import FACTS as _AN94002_FACTS
 
 NAME = "AN93008"
 
-#: the outside figures AN93008 relies on: the same BZX79-C8V2 as AN94002's figure 3 (datasheet_facts.md)
+#: the outside figures AN93008 relies on: the same BZX79-C8V2 as AN94002's figure 3 (BZX79 datasheet)
 FACTS = {k: _AN94002_FACTS[k] for k in ("bzx79_vz", "bzx79_tc")}
 
 PARAMETERS = (

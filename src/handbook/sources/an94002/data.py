@@ -1,7 +1,7 @@
 """AN94002: the note's values (every chapter's parameters), the outside facts it relies on, its textual errata.
 
-Device figures the note relies on without printing come from ``shared/appnotes/datasheet_facts.md``
-and are cited where used.
+Device figures the note relies on without printing come from the devices' public datasheets
+(each :class:`~handbook.core.source.Fact` names which) and are cited where used.
 """
 from __future__ import annotations
 
@@ -110,7 +110,7 @@ PARAMETERS = (
           low=0.0, high=1e-3, cite=ASSUMED),
 )
 
-#: Figures AN94002 relies on without printing, with where they were read (datasheet_facts.md).
+#: Figures AN94002 relies on without printing, with the datasheet each was read from.
 FACTS = {
     "cap_cd_charge": Fact((5.3e-6, 8.1e-6, 11e-6), f"{TDA5144}, CAP-CD electrical table: charge (source) current "
                           "min/typ/max; column pairing is an interpretation of a scrambled table"),

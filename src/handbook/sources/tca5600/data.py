@@ -1,7 +1,7 @@
 """TCA5600/TCF5600 excerpt: the application circuit's values and the assumed device figures.
 
-The excerpt prints no worked numbers and no public copy of the electrical characteristics was found
-(datasheet_facts.md), so every device value is an assumption, stated with its reason.
+The excerpt prints no worked numbers and no public copy of the electrical characteristics was found,
+so every device value is an assumption, stated with its reason.
 """
 from __future__ import annotations
 

@@ -8,7 +8,7 @@ motor current at which the limiter acts: for the op-amp limiters where the LM358
 middle of its swing, for the one-transistor limiter where T2's collector current reaches 2 mA (the current
 of the BC557's V_BE(on) figure). The regulator the limiter throttles (T1, the OTA) is not simulated: the
 ramp is open loop, so the measured point is the limiter's threshold, which is what the equations give.
-Device models: :mod:`.models` (BZX79-C8V2, BC557, LM358, from ``datasheet_facts.md``).
+Device models: :mod:`.models` (BZX79-C8V2, BC557, LM358, from their datasheets).
 """
 from __future__ import annotations
 
