@@ -5,7 +5,6 @@ import re
 import subprocess
 import sys
 import unicodedata
-from pathlib import Path
 
 import pytest
 from test_browser import CHROMIUM, ROOT, toc_files
