@@ -187,6 +187,6 @@ def test_chapter_table_names_the_circuit_when_decks_share_quantities():
 
     text = chapter_table(class_d.circuit(), class_d.circuit_8ohm(), class_d.ripple()).data
     assert text.splitlines()[0].lstrip("| ").startswith("circuit")
-    assert "R_L = 8 ohm, AC" in text and "±0.1 %" in text and "Why each tolerance" in text
+    assert "R_L = 8 Ω, AC" in text and "±0.1 %" in text and "Why each tolerance" in text
     one = chapter_table(converter.circuit()).data
     assert not one.splitlines()[0].lstrip("| ").startswith("circuit") and "±0.5 %" in one

@@ -53,7 +53,7 @@ def errata_md(rows: list[dict]) -> Markdown:
     items = []
     for r in rows:
         nums = readable(_printed_and_recomputed(r))
-        head = (f"**{readable(r['what'])}** (`{r['id']}`; {r['source']}; *{ERRATA_KINDS[r['kind']]}*, "
+        head = (f"**{readable(r['what'])}** (`{r['id']}`; {readable(r['source'])}; *{ERRATA_KINDS[r['kind']]}*, "
                 f"{r['confidence']})" + (f": {nums}." if nums else ""))
         lines = [f"- {head}", f"  The source: {_quoted(r['note'], r['quote'])}",
                  f"  Evidence: {readable(_sentence(r['evidence']))}",
@@ -69,7 +69,7 @@ def reading_notes_md(rows: list[dict]) -> Markdown:
     """Reading notes (not errors of the source) as a list: what, where, and how the book reads it."""
     if not rows:
         return Markdown("No reading notes.")
-    return Markdown("\n".join(f"- **{readable(r['what'])}** ({r['source']}): {readable(_sentence(r['note_text']))}"
+    return Markdown("\n".join(f"- **{readable(r['what'])}** ({readable(r['source'])}): {readable(_sentence(r['note_text']))}"
                                for r in rows))
 
 

@@ -73,7 +73,7 @@ def test_unmeetable_timers_say_what_can_be_met():
 @pytest.mark.parametrize("spec,words", [
     (dict(pole_pairs=4, rpm_min=2e5, rpm_max=3e5), ["rpm_max = 300000", "cannot commutate", "AN94002 2.1.3"]),
     (dict(pole_pairs=1, rpm_min=2e5, rpm_max=4e5), ["CAP-CD = 470 pF", "stray capacitance"]),
-    (dict(pole_pairs=2, rpm_min=20.0, rpm_max=60.0), ["CAP-CD = 2.2 uF", "electrolytic", "5.3 uA"]),
+    (dict(pole_pairs=2, rpm_min=20.0, rpm_max=60.0), ["CAP-CD = 2.2 µF", "electrolytic", "5.3 µA"]),
     (dict(pole_pairs=2, rpm_min=20.0, rpm_max=60.0, inertia=1e-8, torque_constant=1e-2, start_current=0.5),
      ["start oscillator", "would fire", "AN94002 2.1.1"]),
 ])
