@@ -58,6 +58,8 @@ def site(tmp_path_factory):
     out = subprocess.run([str(jb), "build", str(ROOT), "-W", "-n", "--keep-going", "--config", str(path)],
                          capture_output=True, text=True, timeout=900)
     assert out.returncode == 0, out.stdout[-3000:] + out.stderr[-3000:]
+    # Sphinx's incremental build does not copy a changed static file again: the book's own style, as it stands
+    shutil.copy(ROOT / "book" / "_static" / "handbook.css", HTML / "_static" / "handbook.css")
     return HTML
 
 
@@ -71,19 +73,71 @@ def _complete(soup, console):
     return soup.find("h1") and all(el.find("mjx-container") for el in soup.select(".math")) and not _console_errors(console)
 
 
-@pytest.fixture(scope="module")
-def rendered(site):
-    """Every page of the table of contents as Chromium left it: the page's file, its DOM parsed once (html.parser
-    takes about a second on a long chapter, so the tests share one parse) and the console's lines."""
-    def one(doc):
-        page = site / f"{doc}.html"
+#: the layout rule, run in the page (tests/layout_probe.js): what sticks out of the text column, as JSON
+PROBE = Path(__file__).with_name("layout_probe.js").read_text()
+#: a phone's screen: headless Chromium keeps a window at least 500 px wide, so the page is measured in a frame
+#: 390 px wide, whose window the page's media queries see
+NARROW = 390
+FRAME = ('<!DOCTYPE html><html><body style="margin:0"><iframe src="{src}" style="width:{width}px;height:900px;border:0">'
+         '</iframe><script>window.addEventListener("message", e => {{ const p = document.createElement("pre"); '
+         'p.id = "layout-probe"; p.textContent = e.data; document.body.appendChild(p); }});</script></body></html>')
+
+
+def _layout(soup):
+    """The layout probe's report (and the probe's element taken out of the page, so no other check sees it)."""
+    found = [el.get_text() for el in soup.find_all("pre", id="layout-probe")]
+    for el in soup.find_all("pre", id="layout-probe"):
+        el.decompose()
+    return json.loads(found[-1]) if found else None
+
+
+def _with_probe(page: Path, width: int):
+    """The page as loaded for measuring: a copy beside it (its links and styles resolve the same) with the probe
+    at the end of its body, framed at ``width`` when narrower than a window can be. Returns (url, files made)."""
+    copy = page.with_name(f"{page.stem}.probe-{width}.html")
+    copy.write_text(page.read_text().replace("</body>", f"<script>{PROBE}</script></body>", 1))
+    if width >= 800:
+        return copy.as_uri(), [copy]
+    frame = page.with_name(f"{page.stem}.frame-{width}.html")
+    frame.write_text(FRAME.format(src=copy.name, width=width))
+    return frame.as_uri(), [copy, frame]
+
+
+def _load(page: Path, width: int):
+    """(DOM, console lines) of the page at ``width``, loaded until typeset or the longer budget is spent."""
+    url, made = _with_probe(page, width)
+    try:
         for budget in ("20000", "60000"):  # a busy machine can starve one load: a second, longer try before judging
-            r = chromium("--dump-dom", f"--virtual-time-budget={budget}", page.as_uri())
+            r = chromium("--dump-dom", f"--virtual-time-budget={budget}", f"--window-size={max(width, 800)},1000", url)
             console = [l for l in r.stderr.splitlines() if ":CONSOLE" in l]
             soup = BeautifulSoup(r.stdout, "html.parser")
-            if _complete(soup, console):
+            if width < 800 or _complete(soup, console):
                 break
-        return doc, (page, soup, console)
+    finally:
+        for f in made:
+            f.unlink(missing_ok=True)
+    return soup, console
+
+
+@pytest.fixture(scope="module")
+def rendered(site):
+    """Every page of the table of contents as Chromium left it in a 1400 px window: the page's file, its DOM parsed
+    once (html.parser takes about a second on a long chapter, so the tests share one parse), the console's lines
+    and the layout probe's report."""
+    def one(doc):
+        page = site / f"{doc}.html"
+        soup, console = _load(page, 1400)
+        return doc, (page, soup, console, _layout(soup))
+    with ThreadPoolExecutor(2) as pool:
+        return dict(pool.map(one, toc_files()))
+
+
+@pytest.fixture(scope="module")
+def narrow(site):
+    """doc -> the layout probe's report of the page in a frame as wide as a phone's screen."""
+    def one(doc):
+        soup, _ = _load(site / f"{doc}.html", NARROW)
+        return doc, _layout(soup)
     with ThreadPoolExecutor(2) as pool:
         return dict(pool.map(one, toc_files()))
 
@@ -91,7 +145,7 @@ def rendered(site):
 @pytest.fixture(scope="module")
 def parsed(rendered):
     """Each page's file, its soup and the text a reader sees (code, scripts and styles left out)."""
-    return {doc: (page, soup, _reader_text(soup)) for doc, (page, soup, _) in rendered.items()}
+    return {doc: (page, soup, _reader_text(soup)) for doc, (page, soup, _, _) in rendered.items()}
 
 
 def _reader_text(soup):
@@ -195,7 +249,7 @@ def test_internal_links_resolve(site, parsed):
 
 
 def test_browser_console_has_no_errors(rendered):
-    bad = {doc: _console_errors(console) for doc, (_, _, console) in rendered.items()}
+    bad = {doc: _console_errors(console) for doc, (_, _, console, _) in rendered.items()}
     assert not {d: v for d, v in bad.items() if v}
 
 
@@ -207,3 +261,19 @@ def test_screenshot_of_a_chapter_is_kept(site):
     chromium("--window-size=1280,2400", "--virtual-time-budget=20000", f"--screenshot={shot}",
              (site / "book/an94002/opamp_limiter.html").as_uri())
     assert shot.exists() and shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
+
+
+def _sticking_out(report) -> list[str]:
+    return [f"{w['tag']}.{w['cls'].split()[0] if w['cls'] else ''} in section '{w['section']}', {w['over']} px over: "
+            f"{w['text'][:60]!r}" for w in report["wide"]]
+
+
+def test_every_block_fits_the_column_at_1400_px_and_on_a_phone(rendered, narrow):
+    """No visible block wider than the text column except inside its own scroll box (tables, code, display
+    equations), at 1400 px and 390 px: a table that loses a column, an equation cut at the edge or a line that
+    pushes the page sideways fails here with the page and the block."""
+    for width, reports in ((1400, {d: v[3] for d, v in rendered.items()}), (NARROW, narrow)):
+        for doc, report in reports.items():
+            assert report is not None, f"{doc} at {width} px: the layout probe did not run"
+            assert report["width"] <= width and report["column"] <= width + 1, f"{doc} at {width} px: {report}"
+            assert not report["wide"], f"{doc} at {width} px: " + "; ".join(_sticking_out(report))
