@@ -63,7 +63,10 @@ def build_html(work: Path) -> Path:
     # the builder writes the root document's folder (book/intro.html) but links it as if at the top (_static/,
     # _images/): the page is moved up beside them
     page = site / "handbook.html"
-    page.write_text((site / redirect.group(1)).read_text().replace("</head>", f"<style>{PRINT_CSS}</style></head>", 1))
+    # folded tables (dropdowns) print open: paper has no toggle
+    opener = "<script>document.querySelectorAll('details.sd-dropdown').forEach(d => { d.open = true; });</script>"
+    page.write_text((site / redirect.group(1)).read_text().replace("</head>", f"<style>{PRINT_CSS}</style></head>", 1)
+                    .replace("</body>", f"{opener}</body>", 1))
     return page
 
 

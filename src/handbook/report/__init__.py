@@ -12,7 +12,7 @@ _HOME = {"axes": "figures", "format_axis": "figures", "glue_all": "notebook", "i
          "show_equation": "notebook", "BADGE": "tables", "ERRATA_KINDS": "tables", "design_table": "tables",
          "eng": "tables", "errata_counts": "errata", "errata_md": "errata", "reading_notes_md": "errata",
          "review_table": "errata", "examples_table": "tables",
-         "table": "tables", "chapter_table": "spice_tables", "rows_table": "spice_tables",
+         "table": "tables", "folded": "tables", "chapter_table": "spice_tables", "rows_table": "spice_tables",
          "confirm_table": "spice_tables"}
 
 __all__ = sorted(_HOME)

@@ -41,9 +41,15 @@ def rows_table(rows: list[dict], equation_head: str = "equation", lead: dict | N
                  [[*name(r), r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
                    f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", _tolerance(r["rtol"]),
                    r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
-    why = "\n".join(f"- {''.join(t + ', ' for t in name(r))}*{r['quantity']}*, {_tolerance(r['rtol'])}"
-                    + (" (a sanity check: it agrees by construction)" if r["kind"] == "sanity" else "")
-                    + f": {r['why']}." for r in rows)
+    # one line per reason: rows that share a tolerance and its reason (a filter's corner, Q and gain; the same check
+    # at three temperatures) are named together instead of repeating the paragraph for each
+    groups: dict[tuple, list[str]] = {}
+    for r in rows:
+        key = (_tolerance(r["rtol"]), r["kind"] == "sanity", r["why"])
+        groups.setdefault(key, []).append(f"{''.join(t + ', ' for t in name(r))}*{r['quantity']}*")
+    why = "\n".join(f"- {'; '.join(dict.fromkeys(names))}, {tol}"
+                    + (" (a sanity check: it agrees by construction)" if sanity else "") + f": {reason}."
+                    for (tol, sanity, reason), names in groups.items())
     return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + readable(why))
 
 

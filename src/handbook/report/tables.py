@@ -74,6 +74,13 @@ ERRATA_KINDS = {"misprint": "misprint", "inconsistent": "inconsistent", "wrong m
                 "equation": "equation differs", "text": "text erratum"}
 
 
+def folded(summary: str, body) -> Markdown:
+    """A proof table (or any long body) folded away behind a one-line summary a reader can open: a MyST dropdown,
+    which the book renders as a toggle and the PDF prints open."""
+    text = body.data if isinstance(body, Markdown) else str(body)
+    return Markdown(f":::{{dropdown}} {readable(summary)}\n\n{text}\n:::")
+
+
 def table(header: list[str], rows: list[list]) -> Markdown:
     """A Markdown table, every cell's units as a person reads them (:func:`readable`)."""
     lines = ["| " + " | ".join(_cell(readable(h)) for h in header) + " |", "|" + "---|" * len(header)]
