@@ -42,6 +42,15 @@ def test_warnings_name_the_ic_limit_and_the_sense_resistor_power():
     assert not any("R7 dissipates" in w for w in cool.warnings) and cool.p_r7 < 2.0
 
 
+def test_a_zener_the_motor_supply_cannot_feed_is_warned_about():
+    """16 V is the TDA5144's V_MOT maximum and AN94002's board limit: a 15 V zener at +6.1 % reaches 15.9 V (no
+    warning), a 16 V one 17 V (warned, with the figure); the note's 8.2 V never."""
+    assert not any("D1 reaches" in w for w in limiter.design().warnings)
+    assert not any("D1 reaches" in w for w in limiter.design({"zener_voltage": 15.0}).warnings)
+    w = [w for w in limiter.design({"zener_voltage": 16.0}).warnings if "D1 reaches" in w]
+    assert len(w) == 1 and "17 V" in w[0] and "16 V" in w[0]
+
+
 def test_bad_limiter_input_names_the_key():
     with pytest.raises(InputError, match="current_limiter.r9_min"):
         limiter.design({"r9_min": 1e4, "r9_max": 1e3})

@@ -30,6 +30,9 @@ from .search import GAP, solve
 
 #: the motor ICs' own output current limits, minimum (TDA5144 datasheet, June 1994; TDA5143T datasheet)
 IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
+#: the highest motor supply the zener can be fed from, V: the TDA5144's V_MOT maximum (TDA5144 datasheet, June 1994:
+#: 1.7 to 16 V), the board's own limit ("up to a supply voltage of 16 V", AN94002 section 2)
+SUPPLY_MAX = 16.0
 
 
 @dataclass(frozen=True)
@@ -118,14 +121,16 @@ def warnings(r: dict, s: dict) -> list[str]:
     r : dict
         The design's figures, keyed as :class:`LimiterResult`'s fields; "i_trip_max" (A) and "p_r7" (W) are read.
     s : Mapping
-        The checked ``[current_limiter]`` table (SI units); ``ic`` and ``r7_power_rating`` (W) are read.
+        The checked ``[current_limiter]`` table (SI units); ``ic``, ``r7_power_rating`` (W), ``zener_voltage`` (V)
+        and ``zener_tolerance`` (fraction) are read.
 
     Returns
     -------
     list of str
         One sentence per warning, none when there is nothing to say: the highest trip current above the IC's
-        own minimum output limit (:data:`IC_LIMIT_MIN`, A), R7's loss above its rating, an R7 or a tie-break the
-        search did not settle (its evaluation limit).
+        own minimum output limit (:data:`IC_LIMIT_MIN`, A), R7's loss above its rating, a zener at or above the
+        motor supply's limit (:data:`SUPPLY_MAX`, V), an R7 or a tie-break the search did not settle (its
+        evaluation limit).
     """
     out = []
     limit = IC_LIMIT_MIN[s["ic"]]
@@ -135,6 +140,11 @@ def warnings(r: dict, s: dict) -> list[str]:
     if r["p_r7"] > s["r7_power_rating"]:
         out.append(f"R7 dissipates up to {r['p_r7']:.3g} W while the limiter holds a stalled motor at the highest "
                    f"trip current: more than its {s['r7_power_rating']:g} W rating (r7_power_rating)")
+    vz_high = s["zener_voltage"] * (1 + s["zener_tolerance"])
+    if vz_high >= SUPPLY_MAX:
+        out.append(f"D1 reaches {vz_high:.3g} V at its tolerance ({s['zener_voltage']:g} V nominal): at or above the "
+                   f"{SUPPLY_MAX:g} V the motor supply of a {s['ic']} board may reach (TDA5144 datasheet, V_MOT; AN94002 "
+                   "section 2), so no supply the IC survives feeds it; choose a zener well below the supply")
     if r["unproven"]:
         out.append(f"not proven the smallest R7: the search for R7 = "
                    f"{', '.join(eng(v, 'Ω', 3) for v in r['unproven'])} stopped at its evaluation limit without a network, "
