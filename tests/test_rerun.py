@@ -374,7 +374,7 @@ def generated(chapter: str, k: int) -> dict:
 #: parameters cell in static prose, or stop on some sets (tools/rerun_generated.py lists what it finds)
 GENERATED = ("an94002/commutation_delay", "an94002/grounding_decoupling", "an94002/one_transistor_limiter",
              "an94002/parts_list", "an94002/start_oscillator", "an94002/watchdog", "tca5600/converter",
-             "tda5341/commutation")
+             "design/cap_cd", "tda5341/commutation")
 
 
 @pytest.mark.parametrize("k", range(SETS))
