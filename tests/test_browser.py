@@ -19,10 +19,12 @@ from urllib.parse import unquote
 import pytest
 import yaml
 from bs4 import BeautifulSoup
+from build_pdf import chromium as chromium_path
+from build_pdf import offline_config
 
 ROOT = Path(__file__).resolve().parents[1]
 HTML = ROOT / "_build" / "html"
-CHROMIUM = next((p for p in map(shutil.which, ("chromium", "chromium-browser", "google-chrome")) if p), None)
+CHROMIUM = chromium_path()
 pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="no Chromium on this machine: install Debian's "
                                 "'chromium' package (make test does so where apt-get runs as root)")
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
@@ -48,12 +50,7 @@ def chromium(*args):
 def site(tmp_path_factory):
     """The book built from the committed outputs (nbval proves they equal a fresh execution; `make book`
     re-executes every chapter). Same configuration as _config.yml except for execution."""
-    config = yaml.safe_load((ROOT / "_config.yml").read_text())
-    config["execute"]["execute_notebooks"] = "off"
-    # paths in the config are relative to the config file, which now lives elsewhere
-    config["sphinx"]["local_extensions"] = {k: str(ROOT / v) for k, v in config["sphinx"]["local_extensions"].items()}
-    path = tmp_path_factory.mktemp("config") / "_config.yml"
-    path.write_text(yaml.safe_dump(config))
+    path = offline_config(tmp_path_factory.mktemp("config"))
     jb = Path(sys.executable).with_name("jupyter-book")
     out = subprocess.run([str(jb), "build", str(ROOT), "-W", "-n", "--keep-going", "--config", str(path)],
                          capture_output=True, text=True, timeout=900)
@@ -78,6 +75,8 @@ PROBE = Path(__file__).with_name("layout_probe.js").read_text()
 #: a phone's screen: headless Chromium keeps a window at least 500 px wide, so the page is measured in a frame
 #: 390 px wide, whose window the page's media queries see
 NARROW = 390
+#: the window a page is loaded in when it is measured narrower than that (in a frame); wider ones get their own
+WINDOW_MIN = 800
 FRAME = ('<!DOCTYPE html><html><body style="margin:0"><iframe src="{src}" style="width:{width}px;height:900px;border:0">'
          '</iframe><script>window.addEventListener("message", e => {{ const p = document.createElement("pre"); '
          'p.id = "layout-probe"; p.textContent = e.data; document.body.appendChild(p); }});</script></body></html>')
@@ -85,9 +84,7 @@ FRAME = ('<!DOCTYPE html><html><body style="margin:0"><iframe src="{src}" style=
 
 def _layout(soup):
     """The layout probe's report (and the probe's element taken out of the page, so no other check sees it)."""
-    found = [el.get_text() for el in soup.find_all("pre", id="layout-probe")]
-    for el in soup.find_all("pre", id="layout-probe"):
-        el.decompose()
+    found = [el.extract().get_text() for el in soup.find_all("pre", id="layout-probe")]
     return json.loads(found[-1]) if found else None
 
 
@@ -96,7 +93,7 @@ def _with_probe(page: Path, width: int):
     at the end of its body, framed at ``width`` when narrower than a window can be. Returns (url, files made)."""
     copy = page.with_name(f"{page.stem}.probe-{width}.html")
     copy.write_text(page.read_text().replace("</body>", f"<script>{PROBE}</script></body>", 1))
-    if width >= 800:
+    if width >= WINDOW_MIN:
         return copy.as_uri(), [copy]
     frame = page.with_name(f"{page.stem}.frame-{width}.html")
     frame.write_text(FRAME.format(src=copy.name, width=width))
@@ -108,10 +105,10 @@ def _load(page: Path, width: int):
     url, made = _with_probe(page, width)
     try:
         for budget in ("20000", "60000"):  # a busy machine can starve one load: a second, longer try before judging
-            r = chromium("--dump-dom", f"--virtual-time-budget={budget}", f"--window-size={max(width, 800)},1000", url)
+            r = chromium("--dump-dom", f"--virtual-time-budget={budget}", f"--window-size={max(width, WINDOW_MIN)},1000", url)
             console = [l for l in r.stderr.splitlines() if ":CONSOLE" in l]
             soup = BeautifulSoup(r.stdout, "html.parser")
-            if width < 800 or _complete(soup, console):
+            if width < WINDOW_MIN or _complete(soup, console):
                 break
     finally:
         for f in made:
@@ -148,10 +145,12 @@ def parsed(rendered):
     return {doc: (page, soup, _reader_text(soup)) for doc, (page, soup, _, _) in rendered.items()}
 
 
-def _reader_text(soup):
-    """The page's text outside pre, code, script and style elements, without changing the soup."""
-    hidden = ("pre", "code", "script", "style")
-    return "".join(s for s in soup.strings if not any(p.name in hidden for p in s.parents))
+def _reader_text(soup, hidden=("pre", "code", "script", "style"), hidden_class=None, sep=""):
+    """The page's text outside the ``hidden`` elements (and those of class ``hidden_class``), without changing the
+    soup."""
+    def shown(string):
+        return not any(p.name in hidden or hidden_class in (p.get("class") or []) for p in string.parents)
+    return sep.join(s for s in soup.strings if shown(s))
 
 
 def test_every_page_loads(parsed):
@@ -192,9 +191,7 @@ def test_units_are_written_as_a_person_reads_them(parsed):
     """µ, Ω, ± and ° in everything a reader sees, outputs included (a table, a printed line): only what the reader
     types (a code cell's source, a code span) keeps ASCII."""
     for doc, (_, soup, _) in parsed.items():
-        hidden = ("script", "style", "code")
-        text = " ".join(s for s in soup.strings if not any(p.name in hidden or "cell_input" in (p.get("class") or [])
-                                                           for p in s.parents))
+        text = _reader_text(soup, ("script", "style", "code"), "cell_input", sep=" ")  # outputs (pre) included
         bad = [text[max(0, m.start() - 50):m.end() + 10] for m in ASCII_UNITS.finditer(text)]
         assert not bad, f"{doc}: ASCII units in what a reader sees: {bad[:5]}"
 

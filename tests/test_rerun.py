@@ -106,13 +106,18 @@ def rerun(chapter: str, tmp_path_factory) -> Path:
         if params.get("spec_file") == "fan.toml":
             (tmp / "fan.toml").write_text(FAN)
             params["spec_file"] = str(tmp / "fan.toml")
-        out = tmp / "out.ipynb"
-        km = _shared_kernel()
-        _fresh(km, (BOOK / chapter).parent)
-        pm.execute_notebook(str(BOOK / f"{chapter}.ipynb"), str(out), parameters=params, kernel_name="python3",
-                            progress_bar=False, km=km)
-        _runs[chapter] = out
+        _runs[chapter] = execute(chapter, params, tmp / "out.ipynb")
     return _runs[chapter]
+
+
+def execute(chapter: str, params: dict, out: Path) -> Path:
+    """The chapter executed with ``params`` into ``out`` (papermill), in this process's shared kernel, cleared
+    first; papermill's error when the chapter stops."""
+    km = _shared_kernel()
+    _fresh(km, (BOOK / chapter).parent)
+    pm.execute_notebook(str(BOOK / f"{chapter}.ipynb"), str(out), parameters=params, kernel_name="python3",
+                        progress_bar=False, km=km)
+    return out
 
 
 def glued(nb: dict) -> dict:
@@ -200,11 +205,15 @@ def param_units(chapter: str) -> dict:
     return {name: prm.unit for name, prm in registry(chapter).items()}
 
 
+def parameters_source(nb: dict) -> str:
+    """The source of a chapter's parameters cell."""
+    return "".join(next(c for c in nb["cells"] if "parameters" in c.get("metadata", {}).get("tags", []))["source"])
+
+
 def param_default(nb: dict, key: str):
     """The value the committed chapter's parameters cell gives ``key``."""
-    cell = next(c for c in nb["cells"] if "parameters" in c.get("metadata", {}).get("tags", []))
     scope: dict = {}
-    exec("".join(cell["source"]), {}, scope)
+    exec(parameters_source(nb), {}, scope)
     return scope[key]
 
 
@@ -350,8 +359,7 @@ def registry(chapter: str) -> dict:
 def generated(chapter: str, k: int) -> dict:
     """The k-th generated parameter set of a chapter (only the values that differ from its parameters cell)."""
     nb = json.loads((BOOK / f"{chapter}.ipynb").read_text())
-    cell = next(c for c in nb["cells"] if "parameters" in c.get("metadata", {}).get("tags", []))
-    values, reg = parameters.assignments("".join(cell["source"])), registry(chapter)
+    values, reg = parameters.assignments(parameters_source(nb)), registry(chapter)
     rng, factors, out = random.Random(f"{chapter}-{k}"), {}, {}
     for key, v in values.items():
         p = reg.get(key)
@@ -384,10 +392,7 @@ def test_generated_parameter_sets_keep_to_the_readers_values(chapter, k, tmp_pat
     to the end and states none of the note's values as the reader's."""
     params = generated(chapter, k)
     assert len(params) >= 2, f"{chapter}: the generator changed {params}"
-    out = tmp_path / "out.ipynb"
-    _fresh(_shared_kernel(), (BOOK / chapter).parent)
-    pm.execute_notebook(str(BOOK / f"{chapter}.ipynb"), str(out), parameters=params, kernel_name="python3",
-                        progress_bar=False, km=_shared_kernel())
+    out = execute(chapter, params, tmp_path / "out.ipynb")
     note_nb = json.loads((BOOK / f"{chapter}.ipynb").read_text())
     found = problems(chapter, note_nb, json.loads(out.read_text()), params)
     assert not found, f"{chapter} with {params}: the re-run states the note's results as the reader's:\n" + "\n".join(found)

@@ -43,16 +43,24 @@ PRINT_CSS = """
 
 
 def chromium() -> str | None:
+    """Debian's Chromium (or another Chromium on the path), or None."""
     return next((p for p in map(shutil.which, ("chromium", "chromium-browser", "google-chrome")) if p), None)
 
 
-def build_html(work: Path) -> Path:
-    """The single-page HTML of the whole book (execution off), in ``work``; its index.html."""
+def offline_config(folder: Path) -> Path:
+    """The book's _config.yml with execution off (the committed outputs, which nbval proves current), written into
+    ``folder`` with its paths made absolute (they are relative to the config file, which now lives elsewhere)."""
     config = yaml.safe_load((ROOT / "_config.yml").read_text())
     config["execute"]["execute_notebooks"] = "off"
     config["sphinx"]["local_extensions"] = {k: str(ROOT / v) for k, v in config["sphinx"]["local_extensions"].items()}
-    path = work / "_config.yml"
+    path = folder / "_config.yml"
     path.write_text(yaml.safe_dump(config))
+    return path
+
+
+def build_html(work: Path) -> Path:
+    """The single-page HTML of the whole book (execution off), in ``work``; the page to print."""
+    path = offline_config(work)
     jb = Path(sys.executable).with_name("jupyter-book")
     out = subprocess.run([str(jb), "build", str(ROOT), "--builder", "singlehtml", "--path-output", str(work),
                           "--config", str(path)], capture_output=True, text=True, timeout=900)

@@ -18,14 +18,15 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "tests"), str(ROOT / "src")]
 
-import papermill as pm  # noqa: E402
 import test_rerun as tr  # noqa: E402
 
 SETS = tr.SETS
+#: findings printed per run
+SHOW = 3
 
 
 def main(chapters: list[str]) -> int:
-    km, bad = tr._shared_kernel(), 0
+    bad = 0
     for chapter in chapters or sorted(c for c in tr.RERUNS if c != "design/your_own"):
         note_nb = json.loads((tr.BOOK / f"{chapter}.ipynb").read_text())
         for k in range(SETS):
@@ -33,9 +34,7 @@ def main(chapters: list[str]) -> int:
             out = ROOT / "_build" / "rerun_generated" / f"{chapter.replace('/', '_')}_{k}.ipynb"
             out.parent.mkdir(parents=True, exist_ok=True)
             try:
-                tr._fresh(km, (tr.BOOK / chapter).parent)
-                pm.execute_notebook(str(tr.BOOK / f"{chapter}.ipynb"), str(out), parameters=params,
-                                    kernel_name="python3", progress_bar=False, km=km)
+                tr.execute(chapter, params, out)
             except Exception as exc:  # the chapter stopped: its last line says why
                 bad += 1
                 print(f"{chapter} set {k}: STOPPED: {str(exc).strip().splitlines()[-1][:200]}")
@@ -43,7 +42,7 @@ def main(chapters: list[str]) -> int:
             found = tr.problems(chapter, note_nb, json.loads(out.read_text()), params)
             bad += bool(found)
             print(f"{chapter} set {k}: {len(params)} parameters changed, {len(found)} finding(s)")
-            for f in found[:int(__import__("os").environ.get("SHOW", "3"))]:
+            for f in found[:SHOW]:
                 print("    " + f[:240])
     return 1 if bad else 0
 
