@@ -283,6 +283,9 @@ def cmd_rerun(args) -> int:
 
     try:
         page = render.rerun(args.chapter, [tuple(p) for p in args.param or []], args.out)
+    except render.CannotBeMet as exc:
+        print(exc, file=sys.stderr)
+        return 3
     except InputError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2

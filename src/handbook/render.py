@@ -188,6 +188,10 @@ def _value(text: str):
         return text
 
 
+class CannotBeMet(InputError):
+    """A re-run design chapter whose parameters are valid but no parts meet (the command exits 3)."""
+
+
 def rerun(chapter: str, pairs: list[tuple[str, str]], out: str | Path | None = None) -> Path:
     """Re-run a chapter with other values, checked first, then render it; returns the page's path.
 
@@ -233,6 +237,8 @@ def rerun(chapter: str, pairs: list[tuple[str, str]], out: str | Path | None = N
                                 progress_bar=False)
         except pm.PapermillExecutionError as exc:
             why = str(exc.evalue).splitlines()[0] if exc.evalue else exc.ename
+            if exc.ename == "Infeasible":  # a valid spec nothing can meet: the design says what can be met
+                raise CannotBeMet(f"rerun: {key}: cannot be met: {why}") from None
             raise InputError(f"rerun: {key} stopped in its cell {exc.exec_count}: {exc.ename}: {why}") from None
         return render(nb, target)
 

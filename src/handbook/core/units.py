@@ -7,6 +7,7 @@ formatter the book's plot axes use, so a value reads the same in a table and on 
 from __future__ import annotations
 
 import math
+import re
 
 #: SI prefixes by power of ten (as matplotlib's EngFormatter.ENG_PREFIXES)
 PREFIXES = {-30: "q", -27: "r", -24: "y", -21: "z", -18: "a", -15: "f", -12: "p", -9: "n", -6: "µ", -3: "m",
@@ -62,3 +63,17 @@ def eng(value: float, unit: str = "", digits: int = 4) -> str:
     if unit == "%":
         return f"{value * 100:g} %"
     return prefixed(value, unit)
+
+
+_READABLE = ((re.compile(r"(\d)\s?u([FAHVWsm]|Ohm)\b"), "\\1 µ\\2"), (re.compile(r"(\d)\s?kohm\b"), "\\1 kΩ"),
+             (re.compile(r"(\d)\s?Mohm\b"), "\\1 MΩ"), (re.compile(r"(\d)\s?mOhm\b"), "\\1 mΩ"),
+             (re.compile(r"(\d)\s?ohm\b"), "\\1 Ω"), (re.compile(r"\+-\s?"), "±"), (re.compile(r"µOhm"), "µΩ"),
+             (re.compile(r"([/*])u([FAH])\b"), "\\1µ\\2"), (re.compile(r"(\d)\s?deg\b"), "\\1°"))
+
+
+def readable(text: str) -> str:
+    """Units as a person reads them in the registries' ASCII text: 0.23 uF -> 0.23 µF, 750 ohm -> 750 Ω,
+    4.7 kohm -> 4.7 kΩ, +-5 % -> ±5 %. Verbatim quotes of a source are not passed through it."""
+    for pattern, repl in _READABLE:
+        text = pattern.sub(repl, str(text))
+    return text

@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.units import readable
+
 #: IPOPT options that keep every solve silent and deterministic in notebook output
 IPOPT_OPTIONS = {"ipopt.print_level": 0, "ipopt.sb": "yes", "print_time": False,
                  "ipopt.tol": 1e-12, "ipopt.acceptable_tol": 1e-10}
@@ -16,7 +18,7 @@ class Infeasible(Exception):
     says what can be met."""
 
     def __init__(self, table: str, message: str, achievable: dict):
-        super().__init__(message)
+        super().__init__(readable(message))
         self.table = table
         self.achievable = achievable
 

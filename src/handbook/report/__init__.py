@@ -7,8 +7,8 @@ text output (which needs only :mod:`.tables`) does not import pyplot.
 """
 from importlib import import_module
 
-_HOME = {"axes": "figures", "format_axis": "figures", "glue_all": "notebook", "is_note": "notebook", "note_only": "notebook",
-         "setup": "notebook",
+_HOME = {"axes": "figures", "format_axis": "figures", "glue_all": "notebook", "is_note": "notebook",
+         "note_only": "notebook", "sentence": "notebook", "setup": "notebook",
          "show_equation": "notebook", "BADGE": "tables", "ERRATA_KINDS": "tables", "design_table": "tables",
          "eng": "tables", "errata_counts": "errata", "errata_md": "errata", "reading_notes_md": "errata",
          "review_table": "errata", "examples_table": "tables",

@@ -90,8 +90,14 @@ def note_only(name: str, text: str, note: bool, otherwise: str = "") -> None:
     With the note's inputs the sentence is shown as written; with a reader's inputs ``otherwise`` is shown
     instead (by default nothing), so a re-run never states the note's result as the reader's.
     """
+    sentence(name, text if note else otherwise)
+
+
+def sentence(name: str, text: str) -> None:
+    """Glue a Markdown sentence built from this run's values under ``name`` (``{glue:md}`name```): prose whose
+    wording, not only its numbers, depends on the reader's inputs."""
     from myst_nb import glue
 
     from .tables import readable
 
-    glue(name, Markdown(readable(text if note else otherwise)), display=False)
+    glue(name, Markdown(readable(text)), display=False)

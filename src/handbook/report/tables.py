@@ -4,32 +4,16 @@ Everything shown is rounded and free of addresses or timings, so nbval can compa
 """
 from __future__ import annotations
 
-import re
-
 from IPython.display import Markdown
 
 from ..core.claim import UNIT_SCALES
-from ..core.units import eng  # noqa: F401 (report.eng, as the chapters call it)
+from ..core.units import eng, readable  # noqa: F401 (report.eng, report.readable, as the chapters call them)
 
 #: status -> short badge used in tables
 BADGE = {"exact": "exact", "rounding": "rounding", "truncated": "truncated (last digit cut off)",
          "rounded intermediate": "rounding (of a rounded intermediate)", "bound met": "bound met",
          "conservative": "conservative (rounded to the safe side)", "misprint": "**misprint**",
          "inconsistent": "**inconsistent**", "wrong method": "**wrong method**", "n/a": "n/a"}
-
-
-_READABLE = ((re.compile(r"(\d)\s?u([FAHVWsm]|Ohm)\b"), "\\1 µ\\2"), (re.compile(r"(\d)\s?kohm\b"), "\\1 kΩ"),
-             (re.compile(r"(\d)\s?Mohm\b"), "\\1 MΩ"), (re.compile(r"(\d)\s?mOhm\b"), "\\1 mΩ"),
-             (re.compile(r"(\d)\s?ohm\b"), "\\1 Ω"), (re.compile(r"\+-\s?"), "±"), (re.compile(r"µOhm"), "µΩ"),
-             (re.compile(r"([/*])u([FAH])\b"), "\\1µ\\2"), (re.compile(r"(\d)\s?deg\b"), "\\1°"))
-
-
-def readable(text: str) -> str:
-    """Units as a person reads them in the registries' ASCII text: 0.23 uF -> 0.23 µF, 750 ohm -> 750 Ω,
-    4.7 kohm -> 4.7 kΩ, +-5 % -> ±5 %. Verbatim quotes of a source are not passed through it."""
-    for pattern, repl in _READABLE:
-        text = pattern.sub(repl, str(text))
-    return text
 
 
 def _cell(x) -> str:
@@ -131,7 +115,7 @@ def shown_value(v, unit: str) -> str:
     if isinstance(v, bool):  # a proof's flag
         return "yes" if v else "no"
     if isinstance(v, (tuple, list)):  # warnings (text), or values in the unit (the R7 values left unsettled)
-        return "; ".join(shown_value(x, unit) if isinstance(x, float) else str(x) for x in v) if v else "none"
+        return "; ".join(shown_value(x, unit) if isinstance(x, float) else readable(x) for x in v) if v else "none"
     if unit == "%":
         return f"{v:.2%}"
     if unit == "C":

@@ -197,8 +197,10 @@ LAG = ("the equation leaves out the LM358's finite gain and 7 Hz pole (the outpu
 def opamp(p: dict | None = None) -> Circuit:
     """AN94002 figure 3 with the note's values: the trip as the motor current ramps, and the level shift."""
     p = {**opamp_defaults(), **(p or {})}
-    parts = opamp_parts(p)
     eq_vcs = an94002.v_cs_trip(p["zener_voltage"], p["r9"], p["r10"], p["r11"], p["r12"], p["r13"], p["vos"])
+    if eq_vcs > 0:  # the ramp runs to twice the trip eq 13 expects, whatever the network (a reader's values)
+        p["i_max"] = max(p["i_max"], 2 * eq_vcs / p["r7"])
+    parts = opamp_parts(p)
     checks = (
         Check("limiter-opamp-shift", "V_s − V_+ at V_cs = 0 (eq 11: the level shift)", "V",
               an94002.level_shift(p["zener_voltage"], p["r12"], p["r13"]), "head_p", 0.003,
