@@ -149,7 +149,8 @@ def _class_d_heat(s, f):
     """theta_SA needed at oscillator frequency f: T_j at 150 C less the margin, R_DS(on) 300 mOhm max at 25 C
     rising as the datasheet's 200 -> 230 mOhm (25 -> 100 C), eq 9/10 with 25 + 26 + 350 ns, and the idle
     loss of 55 % at 5 W less the LM4651's own 36 mA."""
-    p = p_clip(f, s["r_load"], s["supply"]) if s["p_continuous"] is None else s["p_continuous"]
+    p = p_clip(f, s["r_load"], s["supply"])  # the clipping power, whole or its eighth (IEC 62368-1 Annex E)
+    p = p / 8 if s["thermal_basis"] == "iec_1_8" else p if s["p_continuous"] is None else s["p_continuous"]
     t_j = 150.0 - s["tj_margin"]
     x = (25e-9 + 26e-9 + s["t_overmod"]) * f
     x5 = (25e-9 + 26e-9 + 310e-9) * 125e3

@@ -8,7 +8,7 @@ from handbook.design.solvers import Infeasible
 
 #: a spec each design cannot meet (from the designs' own tests)
 UNMEETABLE = {commutation: {"flyback_time": 5e-3, "rpm_reverse": 3000.0}, limiter: {"i_no_trip": 1.0, "i_must_trip": 1.25},
-              class_d: {"p_continuous": 1000.0}, converter: {"i_out": 5.0}}
+              class_d: {"thermal_basis": "continuous_sine", "p_continuous": 1000.0}, converter: {"i_out": 5.0}}
 TABLES = {commutation: "commutation", limiter: "current_limiter", class_d: "class_d", converter: "converter"}
 
 

@@ -56,7 +56,8 @@ SANE = {
     "class_d": {
         "p_out": st.floats(5, 200), "r_load": st.sampled_from([2.0, 4.0, 6.0, 8.0, 16.0]), "supply": st.floats(12, 22),
         "t_ambient": st.floats(-20, 90), "package": st.sampled_from(["TF", "T"]), "theta_cs": st.floats(0, 1),
-        "theta_sa_available": st.floats(0.3, 20), "p_continuous": st.floats(1, 200), "thd_max": st.floats(0.001, 0.05),
+        "theta_sa_available": st.floats(0.3, 20), "p_continuous": st.floats(1, 200),
+        "thermal_basis": st.sampled_from(["iec_1_8", "continuous_sine"]), "thd_max": st.floats(0.001, 0.05),
         "thd_test_power": st.floats(1, 50), "objective": st.sampled_from(["efficiency", "heat_sink"]),
         "f_audio": st.floats(100, 20e3), "droop_max": st.floats(0.1, 3), "q_max": st.floats(0.5, 2),
         "ripple_max": st.floats(0.1, 2), "i_sat": st.floats(2, 20), "l_tolerance": TOL, "c_tolerance": TOL,
@@ -92,6 +93,8 @@ def specs(draw, junk: bool = True, keep: int = 3):
             if "flyback_time" not in given and draw(st.integers(0, 19)):
                 given.discard("rpm_reverse")
         data[table] = {k: draw(strat) for k, strat in keys.items() if k in given}
+        if "p_continuous" in data[table]:  # a continuous power belongs to the continuous-sine basis
+            data[table]["thermal_basis"] = "continuous_sine"
     if junk and data and draw(st.integers(0, 2)) == 0:
         table = draw(st.sampled_from(sorted(data)))
         data[table][draw(st.sampled_from(sorted(SANE[table])))] = draw(JUNK)

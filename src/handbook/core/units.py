@@ -73,7 +73,18 @@ _READABLE = ((re.compile(r"(\d)\s?u([FAHVWsm]|Ohm)\b"), "\\1 µ\\2"), (re.compil
 
 def readable(text: str) -> str:
     """Units as a person reads them in the registries' ASCII text: 0.23 uF -> 0.23 µF, 750 ohm -> 750 Ω,
-    4.7 kohm -> 4.7 kΩ, +-5 % -> ±5 %. Verbatim quotes of a source are not passed through it."""
+    4.7 kohm -> 4.7 kΩ, +-5 % -> ±5 %. Verbatim quotes of a source are not passed through it.
+
+    Parameters
+    ----------
+    text : str
+        Text written with ASCII units (anything else is taken as its ``str``).
+
+    Returns
+    -------
+    str
+        The same text with µ, Ω, ± and ° where a unit or a tolerance is written.
+    """
     for pattern, repl in _READABLE:
         text = pattern.sub(repl, str(text))
     return text

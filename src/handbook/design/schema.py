@@ -232,9 +232,16 @@ def _tables() -> dict[str, tuple[Param, ...]]:
                   high=10.0, cite="LM4651/LM4652 Heat Sinking: 0.2 C/W with thermal grease"),
             Param(name="theta_sa_available", default=None, unit="K/W", high=100.0, **_POS,
                   meaning="thermal resistance of the heat sink you have (leave out: report the one needed)"),
+            Param(name="thermal_basis", default="iec_1_8", unit="",
+                  meaning="output power the heat sink is sized at: 'iec_1_8', 1/8 of the non-clipped (clipping) "
+                          "power, the normal operating condition of audio amplifiers in safety practice; "
+                          "'continuous_sine', a continuous sine at p_continuous (by default the clipping power)",
+                  choices=("iec_1_8", "continuous_sine"),
+                  cite="IEC 62368-1 Annex E (audio amplifiers, normal operating condition: 1/8 of the non-clipped "
+                       "output power), IEC 60065 4.2.4 before it"),
             Param(name="p_continuous", default=None, unit="W", high=1e4, **_POS,
-                  meaning="power the heat sink must carry (leave out: all the amplifier can deliver before "
-                          "clipping, since a user can always turn it up)"),
+                  meaning="with thermal_basis = 'continuous_sine': the continuous sine power the heat sink must carry "
+                          "(leave out: all the amplifier can deliver before clipping)"),
             Param(name="thd_max", default=0.005, unit="1", high=0.1, **_POS,
                   meaning="THD+N limit at the test point, fraction (0.5 % = 0.005)"),
             Param(name="thd_test_power", default=10.0, unit="W", meaning="output power of the THD+N test point",

@@ -15,7 +15,7 @@ def test_contradictory_specs_say_what_can_be_met():
         class_d.design({"thd_test_power": 500.0})
     assert "thd_test_power = 500.0 W" in str(exc.value) and exc.value.achievable["p_clip"] < 140
     with pytest.raises(Infeasible) as exc:
-        class_d.design({"p_continuous": 1000.0})
+        class_d.design({"thermal_basis": "continuous_sine", "p_continuous": 1000.0})
     text = str(exc.value)
     assert exc.value.achievable["p_deliverable"] == pytest.approx(p_clip(50e3, 4, 20))
     assert "about 140 W at most" in text and "ambient" not in text and "0.00 K/W" not in text

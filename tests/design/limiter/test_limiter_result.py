@@ -18,7 +18,7 @@ SETTINGS = settings(max_examples=25, deadline=None, derandomize=True,
 def test_pinned_resistor_that_breaks_the_spec_is_named():
     with pytest.raises(Infeasible) as exc:
         limiter.design({"r12": 1e3, "r13": 100e3})
-    assert "r12 = 1000 ohm (pinned)" in str(exc.value) and exc.value.achievable["pinned"] == "r12"
+    assert "r12 = 1000 Ω (pinned)" in str(exc.value) and exc.value.achievable["pinned"] == "r12"
     assert limiter.design({"r13": 100e3}).r12 > 1e3  # freed, R12 takes another value
 
 
@@ -103,7 +103,7 @@ def test_a_blamed_pin_is_one_whose_freedom_meets_the_spec():
     with pytest.raises(Infeasible) as exc:
         limiter.design({"r12": 1e3, "r13": 100e3})
     freed = limiter.design({"r13": 100e3})
-    assert f"meets it (with R7 = {freed.r7:.3g} ohm)" in str(exc.value)
+    assert f"meets it (with R7 = {freed.r7:.3g} Ω)" in str(exc.value)
 
 
 def test_a_pin_whose_own_range_holds_no_series_value_is_not_freed():

@@ -165,12 +165,18 @@ def _heat_sink_reach(s: dict, ev: dict, achievable: dict) -> str:
     allowed = (t_target - s["t_ambient"]) / (path + sink)
     p_cont = np.inf
     for f in (ev["f_sw_min"], ev["f_sw_max"]):
-        w0, w1 = ((t_target - s["t_ambient"]) / (model.heat({**s, "p_continuous": q}, f)[0] + path) for q in (0, 1))
+        sine = ({**s, "thermal_basis": "continuous_sine", "p_continuous": q} for q in (0, 1))
+        w0, w1 = ((t_target - s["t_ambient"]) / (model.heat(at, f)[0] + path) for at in sine)
         p_cont = min(p_cont, (allowed - w0) / (w1 - w0))
     achievable["p_continuous_max"] = max(p_cont, 0.0)
     which = "an ideal heat sink" if s["theta_sa_available"] is None else "the heat sink"
     text += (f"; the LM4652 would dissipate {watts:.1f} W at T_j = {t_target:.0f} C, {which} carries "
-             f"{allowed:.1f} W there: p_continuous at most {max(p_cont, 0.0):.0f} W")
+             f"{allowed:.1f} W there: ")
+    if s["thermal_basis"] == "iec_1_8":  # the power carried is an eighth of the clipping power
+        text += (f"{max(p_cont, 0.0):.0f} W of output at most, an eighth of {8 * max(p_cont, 0.0):.0f} W "
+                 "(thermal_basis = iec_1_8)")
+    else:
+        text += f"p_continuous at most {max(p_cont, 0.0):.0f} W"
     if "p_deliverable" in achievable and p_cont >= achievable["p_deliverable"]:
         text += f", more than the amplifier delivers: leave p_continuous out (or at most {p_max:.0f} W)"
     t_amb = t_target - watts * (path + sink)

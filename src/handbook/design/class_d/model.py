@@ -111,10 +111,37 @@ def band_deviation_box_db(s: dict, l_out, c_out):
     return np.maximum(np.max(corners, axis=0), band_deviation_db(fa, l_star, c_hi, rl))
 
 
+#: the share of the clipping power the heat sink is sized at, per thermal basis (IEC 62368-1 Annex E: 1/8)
+CLIP_SHARE = {"iec_1_8": 1 / 8, "continuous_sine": 1.0}
+
+
+def thermal_power(s: dict, f):
+    """The output power the heat sink is sized at, W: 1/8 of the clipping power at f (``thermal_basis`` =
+    'iec_1_8', IEC 62368-1 Annex E's normal operating condition), or a continuous sine at ``p_continuous``
+    (default: the clipping power at f, all the amplifier can deliver) for 'continuous_sine'.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units); ``thermal_basis``, ``p_continuous`` (W), ``r_load`` (ohm) and
+        ``supply`` (V) are read.
+    f : float or numpy.ndarray
+        The oscillator frequency, Hz (arrays broadcast).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The output power the LM4652's heat sink carries, W, broadcast over ``f``.
+    """
+    if s["thermal_basis"] == "continuous_sine" and s["p_continuous"] is not None:
+        return s["p_continuous"] + 0 * f
+    return CLIP_SHARE[s["thermal_basis"]] * lm4651.p_clip(f, s["r_load"], s["supply"])
+
+
 def heat(s: dict, f, theta_sa=None, bare=False):
     """(theta_SA needed, T_j with theta_SA, LM4652 dissipation at that T_j) at oscillator frequency f.
 
-    The LM4652 carries p_continuous (default: the clipping power at f, all the amplifier can deliver), eq 9
+    The LM4652 carries :func:`thermal_power` at f (the thermal basis), eq 9
     and 10 with the 350 ns over-modulation time, conduction with R_DS(on) maximum at T_j, and its idle
     share. P(T_j) is linear in T_j, so T_j = (T_a + theta P0) / (1 - theta k) exactly (inf: no steady
     state). ``bare``: no heat sink, the package alone at the thermal table's theta_JA; where that steady
@@ -139,7 +166,7 @@ def heat(s: dict, f, theta_sa=None, bare=False):
         no steady state (``bare``: the package alone, and past T_jmax the shutdown's reading described above);
         the LM4652's dissipation at that T_j, W), each broadcast over ``f``.
     """
-    p = lm4651.p_clip(f, s["r_load"], s["supply"]) if s["p_continuous"] is None else s["p_continuous"]
+    p = thermal_power(s, f)
     a = (lm4651.p_switch(f, p, t_overmod=s["t_overmod"]) + lm4651.p_idle_4652(s["supply"]))
     b = 2 * p / s["r_load"] * s["rds_on_25"] / lm4651.RDS_ON_MAX_25  # W per ohm of the maximum R_DS(on)
     path = DEV["theta_jc"][s["package"]] + s["theta_cs"]

@@ -33,7 +33,7 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from ...core import series
+from ...core import InputError, series
 from ...sources.lm4651 import circuit as lm4651
 from ..common import Result, Table, checked_table, completed, is_checked, reported
 from ..solvers import IPOPT_OPTIONS, Infeasible, Solution
@@ -60,10 +60,15 @@ class ClassDResult(Result):
     l_out: float = reported('H', 'filter inductors L')
     c_out: float = reported('F', 'C_BYP')
     efficiency: float = reported('%', 'efficiency at p_out')
+    thermal_basis: str = reported('', 'heat sink sized at')
+    p_thermal: float = reported('W', 'output power the heat sink carries (its thermal basis)')
     p_dissipation: float = reported('W', 'LM4652 dissipation (corner setting the heat sink)')
     theta_sa_required: float = reported('K/W', 'heat sink needed')
     t_junction: float = reported('C', 'T_j with the heat sink (the one needed: 150 C - tj_margin by construction)')
-    t_junction_no_sink: float = reported('C', 'T_j with no heat sink, theta_JA alone (above 150 C it shuts down)')
+    needs_heat_sink: bool = reported('', 'needs a heat sink (theta_JA alone passes the 150 C shutdown)')
+    t_junction_no_sink: float | None = reported('C', 'T_j with no heat sink, theta_JA alone (none: past the shutdown)')
+    audio_band: str = reported('', 'audio band')
+    f_corner: float = reported('Hz', "output filter's corner, 1/(2 pi sqrt(2 L C_BYP))")
     thd_n: float = reported('%', "THD+N at the test point (in the analyser's band)")
     p_clip: float = reported('W', 'clipping power')
     binding: str = reported('', 'binding')
@@ -96,7 +101,35 @@ def checked(spec: Mapping | None) -> Table:
     """
     if is_checked(TABLE, spec):  # checked once, where it was read
         return spec
-    return checked_table(TABLE, completed(TABLE, spec))
+    s = completed(TABLE, spec)
+    if s["p_continuous"] is not None and s["thermal_basis"] != "continuous_sine":
+        raise InputError(f"{TABLE}.p_continuous = {s['p_continuous']:g} W is a continuous sine power: give it with "
+                         f"{TABLE}.thermal_basis = \"continuous_sine\" (the basis is {s['thermal_basis']!r}, 1/8 of the "
+                         "clipping power by IEC 62368-1 Annex E)")
+    return checked_table(TABLE, s)
+
+
+def _basis_text(s: dict) -> str:
+    """The heat sink's thermal basis in words."""
+    if s["thermal_basis"] == "iec_1_8":
+        return "1/8 of the clipping power (IEC 62368-1 Annex E, normal operating condition)"
+    if s["p_continuous"] is None:
+        return "a continuous sine at the clipping power (all the amplifier delivers)"
+    return f"a continuous sine at p_continuous = {s['p_continuous']:g} W"
+
+
+#: the LM4651/LM4652 datasheet's own use: "designed for low frequency audio applications" (Input Pre-Amplifier
+#: with Subwoofer Filter), a subwoofer's low pass "normally set within the range of 60Hz - 180Hz"
+SUBWOOFER_BAND = 1e3
+
+
+def _band_text(s: dict) -> str:
+    """The audio band the filter keeps flat, named as the datasheet's subwoofer use when it is one."""
+    top = s["f_audio"]
+    text = f"up to {top / 1e3:.3g} kHz" if top >= 1e3 else f"up to {top:.3g} Hz"
+    if top <= SUBWOOFER_BAND:
+        text += " (a subwoofer band: the datasheet's low-frequency use)"
+    return text
 
 
 def r_dly_for(s: dict) -> float:
@@ -132,6 +165,7 @@ def _params(s: dict) -> list[float]:
     p = {"p_out": s["p_out"], "r_load": s["r_load"], "supply": s["supply"], "t_a": s["t_ambient"],
          "path": s["theta_cs"] + DEV["theta_jc"][s["package"]], "sink": s["theta_sa_available"] or 0.0,
          "thd_max": s["thd_max"], "p_test": s["thd_test_power"], "w_cont": float(s["p_continuous"] is not None),
+         "clip_share": model.CLIP_SHARE[s["thermal_basis"]],
          "p_cont": s["p_continuous"] or 0.0, "tol_slow": s["osc_tol_slow"], "tol_fast": s["osc_tol_fast"],
          "tol_l": s["l_tolerance"], "tol_c": s["c_tolerance"], "f_audio": s["f_audio"],
          "g_band": 10 ** (s["droop_max"] / 10), "q_max": s["q_max"], "ripple_max": s["ripple_max"],
@@ -143,7 +177,7 @@ def _params(s: dict) -> list[float]:
 
 def _theta_needed(f, P):
     """theta_SA needed at oscillator frequency f (symbolic twin of model.heat)."""
-    pc = P["w_cont"] * P["p_cont"] + (1 - P["w_cont"]) * lm4651.p_clip(f, P["r_load"], P["supply"])
+    pc = P["w_cont"] * P["p_cont"] + (1 - P["w_cont"]) * P["clip_share"] * lm4651.p_clip(f, P["r_load"], P["supply"])
     watts = (lm4651.p_switch(f, pc, t_overmod=P["t_om"]) + lm4651.p_idle_4652(P["supply"])
              + 2 * pc / P["r_load"] * P["rds25"] * (1 + lm4651.RDS_TC * (P["t_target"] - 25.0)))
     return (P["t_target"] - P["t_a"]) / watts - P["path"]
@@ -182,7 +216,7 @@ def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, flo
     return out
 
 
-NAMES = ("p_out", "r_load", "supply", "t_a", "path", "sink", "thd_max", "p_test", "w_cont", "p_cont", "tol_slow",
+NAMES = ("p_out", "r_load", "supply", "t_a", "path", "sink", "thd_max", "p_test", "w_cont", "clip_share", "p_cont", "tol_slow",
          "tol_fast", "tol_l", "tol_c", "f_audio", "g_band", "q_max", "ripple_max", "i_max", "dcr", "t_target",
          "rds25", "t_om", "band", "p_need")
 
@@ -346,11 +380,17 @@ def design(spec: dict | None = None) -> ClassDResult:
     # the binding constraints of the continuous optimum on the series design's side of the band
     above = fig["f_sw_min"] >= s["thd_bandwidth"]
     sol = next((x for x in sols if ("analyser band" in x.names) == above), sols[0])
+    f_slow, f_fast = fig["f_sw_min"], fig["f_sw_max"]
+    f_set = f_slow if model.heat(s, f_slow)[0] <= model.heat(s, f_fast)[0] else f_fast  # the corner that sets it
+    p_thermal = float(model.thermal_power(s, f_set))
+    hot = bool(fig["t_junction_no_sink"] > DEV["tj_max"])
     return ClassDResult(
         spec=s, f_sw=fig["f_sw"], f_sw_min=fig["f_sw_min"], f_sw_max=fig["f_sw_max"], r_osc=r_osc, r_dly=r_dly,
         l_out=l_out, c_out=c_out, efficiency=fig["efficiency"], p_dissipation=fig["p_dissipation"],
         theta_sa_required=fig["theta_sa_required"], t_junction=fig["t_junction"],
-        t_junction_no_sink=fig["t_junction_no_sink"],
+        thermal_basis=_basis_text(s), p_thermal=p_thermal, needs_heat_sink=hot,
+        t_junction_no_sink=None if hot else fig["t_junction_no_sink"], audio_band=_band_text(s),
+        f_corner=float(lm4651.filter_f0(l_out, c_out)),
         thd_n=fig["thd_n"],
         p_clip=fig["p_clip"], binding=binding_text(sol, fig), warnings=warnings(s, fig, l_out, c_out),
         figures=fig, continuous=(float(sol.x[0]), float(sol.x[1]), float(sol.x[2])),
