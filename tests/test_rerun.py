@@ -244,7 +244,7 @@ TOKEN = re.compile(r"(?<![\w.,])([-+−]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?)[ 
                    + r")(?![\w/])")
 # a value the sentence gives as the source's own: attributed just before it, or quoted
 ATTRIBUTED = re.compile(r"(note's|notes'|printed|prints|datasheet's|datasheet|database's|AN9400\d|AN93008|Example Design|"
-                        r"(?:LM|TDA|TCA)\d+\w*'s|"
+                        r"(?:LM|TDA|TCA|BZX)\d+\w*'s|"
                         r"example's|table's|the note|typical circuit's|default|defaults)\W+(\w+\W+){0,4}$",
                         re.IGNORECASE)
 ATTRIBUTED_AFTER = re.compile(r"^\W*(\w+\W+){0,2}(example|as printed|note)\b", re.IGNORECASE)

@@ -56,7 +56,7 @@ def limiter_reduced(cases: int = 200) -> dict:
         t_enum.append(time.perf_counter() - t)
         t = time.perf_counter()
         try:
-            got = limiter.design(spec)
+            got = limiter.design(spec, board=False)
         except Infeasible:
             got = None
         t_search.append(time.perf_counter() - t)
@@ -89,7 +89,7 @@ def limiter_wide(cases: int = 520) -> dict:
             continue
         t = time.perf_counter()
         try:
-            r = limiter.design(spec)
+            r = limiter.design(spec, board=False)
         except Infeasible:
             r = None
         times.append(time.perf_counter() - t)

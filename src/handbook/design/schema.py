@@ -71,9 +71,26 @@ def _limiter() -> tuple[Param, ...]:
                       "it and still bias D1)",
               cite="AN94002 parts list: D1 fed by R14 = 750 ohm, 5 mA at 12 V; the BZX79's tolerance holds at "
                    "5 mA; the note's own dividers draw 0.76 mA"),
-        Param(name="r7_power_rating", default=1.0, unit="W", high=1e3, **_POS,
-              meaning="power rating of the sense resistor R7 (a warning above it)",
-              cite="AN94002 parts list: R7 is a PR01, a 1 W resistor"),
+        Param(name="r7_power_rating", default=3.0, unit="W", high=1e3, **_POS,
+              meaning="largest power rating the board takes for R7: the design picks the smallest class that "
+                      "carries the stall loss with the derating, and warns when that is above this",
+              cite="AN94002 parts list: R7 is a PR01, a 1 W resistor; 3 W: the largest leaded film class"),
+        Param(name="v_supply_min", default=10.8, unit="V", low=1.0, high=60.0,
+              meaning="motor supply at its lowest (feeds D1 through R14)",
+              cite="AN93008: 'a supply voltage V_supply of 12 V -10%'; AN94002's board runs from 12 V"),
+        Param(name="v_supply_max", default=13.2, unit="V", low=1.0, high=60.0,
+              meaning="motor supply at its highest: checked against the IC's motor supply rating; sizes R14's and "
+                      "D1's dissipation",
+              cite="12 V +10 %, as AN93008's -10 %"),
+        Param(name="v_drop_max", default=1.0, unit="V", high=10.0, **_POS,
+              meaning="largest drop across R7 in the motor path, at the highest trip current and R7's high end",
+              cite="AN94002 2.3: the speed control wants at least 1 V across R7 and T1 together for linear "
+                   "control; R7 alone may take no more"),
+        Param(name="zener_test_current", default=5e-3, unit="A", high=0.1, **_POS,
+              meaning="current at which D1's tolerance is specified: R14 feeds at least this plus the dividers' "
+                      "current at the lowest supply",
+              cite="BZX79-C8V2 datasheet: V_Z 7.7 to 8.7 V at I_Z = 5 mA"),
+        _series("r14_series", "E24", "R14 (D1's feed)"),
         Param(name="input_headroom", default=2.0, unit="V", low=0.0, high=50.0,
               meaning="least distance of both op-amp inputs below the supply",
               cite="AN94002 2.4; LM358 common-mode range to V_CC - 2 V over temperature"),

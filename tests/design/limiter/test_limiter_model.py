@@ -46,7 +46,7 @@ def test_the_issues_counter_example_is_fixed():
     s = {**defaults("current_limiter"), **spec}
     _, hi, _, _ = limiter_corners(5.1, (10.0, 160e3, 130.0, 110e3, 2200.0), s)
     assert hi == pytest.approx(1.8002, abs=1e-4)
-    r = limiter.design(spec)
+    r = limiter.design(spec, board=False)
     assert r.r7 == 5.6 and (r.r10, r.r11, r.r12, r.r13) == (160e3, 130.0, 110e3, 2200.0)
     lo, hi, _, _ = limiter_corners(r.r7, r.network, s)
     assert 0.9 <= lo and hi <= 1.8
@@ -60,9 +60,9 @@ def test_default_design_against_every_corner():
     assert lo >= 0.9 * 1.02 - 1e-12 and hi <= 1.8 * 0.98 + 1e-12 and head >= 2.0 and i_div <= 1e-3
     assert r.margin_low == pytest.approx(lo / 0.9 - 1) and r.margin_high == pytest.approx(1 - hi / 1.8)
     # stalled, the limiter holds the motor at up to i_trip_max, which flows in the smallest R7 (0.43 ohm x 0.95):
-    # 1.75 A^2 x 0.41 ohm = 1.26 W, above the PR01's 1 W
+    # 1.75 A^2 x 0.41 ohm = 1.26 W, above the PR01's 1 W: the design picks a part that carries it at 50 %
     assert r.p_r7 == pytest.approx(hi ** 2 * r.r7 * 0.95) and r.p_r7 > 1.0
-    assert r.warnings and "1 W rating" in r.warnings[0]
+    assert r.r7_rating == 3.0 and not r.warnings
     # the note's network fails the LM358's input range at its worst corner: (8.2 V x 0.939 - 0.165 V drift)
     # x 5.6/21.6 less the resistors' tolerance and the bias current is about 1.92 V, below 2 V
     _, _, head_note, _ = limiter_corners(0.43, (r.r9, 5.6e3, 16e3, 5.6e3, 16e3), s)

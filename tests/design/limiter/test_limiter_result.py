@@ -28,7 +28,7 @@ def test_infeasible_margin_says_what_can_be_met():
     best = exc.value.achievable["min_margin_max"]
     assert 0 < best < 0.02 and f"best worst margin any network reaches is {best:.2%}" in str(exc.value)
     # the same spec with half the margin the message offers designs, and holds at every corner
-    r = limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.35, "min_margin": best * 0.5})
+    r = limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.35, "min_margin": best * 0.5, "v_drop_max": 10.0})
     lo, hi, _, _ = limiter_corners(r.r7, r.network, r.spec)
     assert lo >= 1.0 * (1 + best * 0.5) - 1e-9 and hi <= 1.35 * (1 - best * 0.5) + 1e-9
     with pytest.raises(Infeasible, match="none keeps it inside the window at all"):
@@ -38,17 +38,53 @@ def test_infeasible_margin_says_what_can_be_met():
 def test_warnings_name_the_ic_limit_and_the_sense_resistor_power():
     r = limiter.design({"ic": "TDA5143"})
     assert any("TDA5143" in w and "0.7 A" in w for w in r.warnings)
-    cool = limiter.design({"r7_power_rating": 2.0})
-    assert not any("R7 dissipates" in w for w in cool.warnings) and cool.p_r7 < 2.0
+    assert not any("R7 dissipates" in w for w in limiter.design().warnings)
+    small = limiter.design({"r7_power_rating": 2.0})  # the stall needs a 3 W part: the board takes 2 W at most
+    assert any("R7 dissipates" in w and "needs a 3 W part" in w for w in small.warnings)
 
 
-def test_a_zener_the_motor_supply_cannot_feed_is_warned_about():
-    """16 V is the TDA5144's V_MOT maximum and AN94002's board limit: a 15 V zener at +6.1 % reaches 15.9 V (no
-    warning), a 16 V one 17 V (warned, with the figure); the note's 8.2 V never."""
-    assert not any("D1 reaches" in w for w in limiter.design().warnings)
-    assert not any("D1 reaches" in w for w in limiter.design({"zener_voltage": 15.0}).warnings)
-    w = [w for w in limiter.design({"zener_voltage": 16.0}).warnings if "D1 reaches" in w]
-    assert len(w) == 1 and "17 V" in w[0] and "16 V" in w[0]
+def test_r7_is_rated_for_the_stall_at_half_its_rating():
+    """By hand at the defaults: the stall loss I_trip,max^2 R7 (1 - 5 %) is 1.25 W; at 50 % of the rating (the
+    ambient 25 + 25 = 50 C is below the 70 C knee) it needs 2.5 W: the 3 W leaded class."""
+    r = limiter.design()
+    p = r.i_trip_max ** 2 * r.r7 * 0.95
+    assert r.p_r7 == pytest.approx(p, rel=1e-12) and 1.2 < p < 1.3
+    assert (r.r7_rating, r.r7_package) == (3.0, "3 W leaded film") and 0.5 * r.r7_rating >= p
+    hot = limiter.design({"temp_span": 75.0, "v_drop_max": 2.0})  # 100 C: (155 - 100) / 85 of the rating is left
+    assert hot.r7_rating * 0.5 * (155 - 100) / 85 >= hot.p_r7 and hot.r7_rating == 10.0  # 1.64 W needs 5.07 W
+
+
+def test_the_drop_in_the_motor_path_is_held_to_v_drop_max():
+    """R7 is the smallest that meets the window, so no other network drops less: a window whose R7 drops more
+    than v_drop_max cannot be met, and says the drop it needs."""
+    r = limiter.design()
+    assert r.v_drop == pytest.approx(r.i_trip_max * r.r7 * 1.05, rel=1e-12) and r.v_drop <= 1.0
+    with pytest.raises(Infeasible) as exc:
+        limiter.design({"i_no_trip": 0.8, "i_must_trip": 1.2, "min_margin": 0.0})
+    need = exc.value.achievable["v_drop_min"]
+    assert need > 1.0 and f"drops {need:.3g} V" in str(exc.value) and "v_drop_max = 1 V" in str(exc.value)
+    allowed = limiter.design({"i_no_trip": 0.8, "i_must_trip": 1.2, "min_margin": 0.0, "v_drop_max": need * 1.001})
+    assert allowed.r7 == exc.value.achievable["r7"] and allowed.v_drop == pytest.approx(need)
+
+
+def test_the_supply_is_held_to_the_ic_and_feeds_the_zener():
+    """16 V is the TDA5144's V_MOT maximum (AN94002's board limit): a 24 V supply cannot be met. R14 by hand at
+    the defaults (10.8 to 13.2 V): D1 at its highest, 8.2 V x 1.061 + 25 K x 6.6 mV/K = 8.865 V, must still get
+    its 5 mA test current plus the dividers' current through R14 at +1 %; the loss at 13.2 V with D1 at its
+    lowest, 8.2 V x 0.939 - 0.165 V, and R14 at -1 %."""
+    with pytest.raises(Infeasible, match="V_MOT at most 16 V") as exc:
+        limiter.design({"v_supply_min": 21.6, "v_supply_max": 26.4})
+    assert exc.value.achievable["v_supply_max"] == 16.0
+    with pytest.raises(Infeasible, match="too close to the lowest supply"):
+        limiter.design({"zener_voltage": 10.0})
+    r = limiter.design()
+    vz_high, vz_low = 8.2 * 1.061 + 0.165, 8.2 * 0.939 - 0.165
+    largest = (10.8 - vz_high) / (5e-3 + r.divider_current) / 1.01
+    assert r.r14 == 300.0 and 300.0 <= largest < 330.0  # E24: 300 is the largest at or below it
+    assert r.i_zener_min == pytest.approx((10.8 - vz_high) / (300 * 1.01) - r.divider_current) and r.i_zener_min >= 5e-3
+    i_max = (13.2 - vz_low) / (300 * 0.99)
+    assert r.p_r14 == pytest.approx(i_max ** 2 * 297) and r.p_zener == pytest.approx(vz_high * i_max)
+    assert not r.warnings
 
 
 def test_bad_limiter_input_names_the_key():

@@ -68,7 +68,7 @@ def test_the_search_equals_enumeration_on_reduced_series(r7_tolerance, r9_series
     spec = _reduced_spec(data.draw, r7_tolerance, r9_series)
     expected = enumerate_limiter(spec)
     try:
-        got = limiter.design(spec)
+        got = limiter.design(spec, board=False)
     except Infeasible:
         assert expected is None
         return
@@ -95,7 +95,7 @@ def test_every_design_holds_at_every_corner(i_no, ratio, off, vz, rt, tc, pins, 
                 **{f"r{n}_max": 1e6 for n in (10, 11, 12, 13)}, r7_max=1e3)
     spec.update({n: v for n, v in zip(["r9", "r10", "r11", "r12", "r13"], pins) if n in pinned})
     try:
-        r = limiter.design(spec)
+        r = limiter.design(spec, board=False)
     except Infeasible as exc:  # says what can be met: a figure of the spec's own table
         assert exc.table == "current_limiter" and exc.achievable, exc
         assert set(exc.achievable) <= {"divider_current_min", "headroom_max", "min_margin_max", "r7_relaxed", "pinned"}
@@ -119,7 +119,7 @@ def test_a_spec_whose_relaxation_ipopt_calls_infeasible():
         spec.update({f"{n}_series": "E12", f"{n}_min": low, f"{n}_max": low * 3})
     expected = enumerate_limiter(spec)
     assert expected is not None and expected[0] == pytest.approx(0.027)
-    assert limiter.design(spec).r7 == pytest.approx(expected[0])
+    assert limiter.design(spec, board=False).r7 == pytest.approx(expected[0])
 
 
 def test_issue_18s_spec_designs_0_698_ohm_with_the_best_network():
@@ -137,7 +137,7 @@ def test_issue_18s_spec_designs_0_698_ohm_with_the_best_network():
                 **{f"r{n}_series": "E48" for n in (9, 10, 11, 12, 13)})
     audit = limiter_corners(0.698, (402.0, 59000.0, 95300.0, 8660.0, 17800.0), limiter.checked(spec))
     assert audit[0] < spec["i_no_trip"]  # 1.454 A: below i_no_trip itself, let alone its 5 % margin
-    r = limiter.design(spec)
+    r = limiter.design(spec, board=False)
     assert r.r7 == 0.698 and r.r7_proven and r.best_proven
     assert min(r.margin_low, r.margin_high) >= 0.269 - limiter.GAP
     lo, hi, head, i_div = limiter_corners(r.r7, r.network, r.spec)
@@ -152,7 +152,7 @@ def test_the_reference_of_the_largest_y_is_not_lost_to_rounding():
     spec = {"r9": 105.0, "r10": 5620.0, "r11": 11300.0}
     expected = enumerate_limiter(spec)
     assert expected is not None and expected[0] == pytest.approx(0.47)
-    r = limiter.design(spec)
+    r = limiter.design(spec, board=False)
     assert r.r7 == expected[0] and min(r.margin_low, r.margin_high) >= expected[2] - limiter.GAP - 1e-9
     assert expected[2] <= r.margin_bound + 1e-9
 
@@ -164,7 +164,7 @@ def test_the_bound_is_above_the_best_network_with_a_pinned_r7():
                 r11_max=10000.0, r12=3300.0, r13=8200.0, input_headroom=0.5, divider_current_max=0.1, min_margin=0.0,
                 i_no_trip=0.2832, i_must_trip=50.0)
     expected = enumerate_limiter(spec)
-    r = limiter.design(spec)
+    r = limiter.design(spec, board=False)
     assert r.r7 == 1.0 and r.best_proven and expected[2] <= r.margin_bound + 1e-9
     assert min(r.margin_low, r.margin_high) >= expected[2] - limiter.GAP - 1e-9
 
@@ -185,7 +185,7 @@ def test_the_search_equals_enumeration_with_a_pinned_reference(data):
     spec["i_must_trip"] = spec["i_no_trip"] * data.draw(st.floats(1.5, 4))
     expected = enumerate_limiter(spec)
     try:
-        got = limiter.design(spec)
+        got = limiter.design(spec, board=False)
     except Infeasible:
         assert expected is None
         return

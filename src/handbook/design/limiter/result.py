@@ -19,8 +19,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ...core import series
 from ...core.units import eng
 from ...sources.an94002 import circuit as an94002
+from .. import ratings
 from ..common import Result, reported
 from ..solvers import Infeasible
 from . import model as net
@@ -47,6 +49,13 @@ class LimiterResult(Result):
     i_trip_max: float = reported('A', 'highest trip current')
     i_trip_nominal: float = reported('A', 'nominal trip current')
     p_r7: float = reported('W', 'loss in R7 at the highest trip current (stalled motor)')
+    r7_rating: float = reported('W', "R7's power rating (the stall loss at 50 % of it at the highest ambient)")
+    r7_package: str = reported('', "R7's package class")
+    v_drop: float = reported('V', 'drop across R7 at the highest trip current (R7 at its high end)')
+    r14: float = reported('ohm', "R14, D1's feed")
+    p_r14: float = reported('W', 'loss in R14 at the highest supply')
+    i_zener_min: float = reported('A', 'current into D1 at the lowest supply (the dividers at their most)')
+    p_zener: float = reported('W', "D1's dissipation at the highest supply (the dividers at their least)")
     v_cs_nominal: float = reported('V', 'nominal sense voltage')
     margin_low: float = reported('%', 'margin above i_no_trip')
     margin_high: float = reported('%', 'margin below i_must_trip')
@@ -68,13 +77,17 @@ class LimiterResult(Result):
         return self.r9, self.r10, self.r11, self.r12, self.r13
 
 
-def design(spec: dict | None = None) -> LimiterResult:
+def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
     """The smallest series R7 with the divider network of the largest worst margin; verified at every corner.
 
     Parameters
     ----------
     spec : dict or None
         The ``[current_limiter]`` table (keys of :data:`handbook.design.schema.TABLES`); defaults fill the rest.
+    board : bool
+        True (the design): the network on its board, the supply held to the IC's rating and the zener, the
+        drop across R7 to ``v_drop_max``, R14 designed. False: the network alone (R14's figures None where the
+        supply cannot feed the zener), as the search's own tests compare it with references that know no board.
 
     Returns
     -------
@@ -89,6 +102,8 @@ def design(spec: dict | None = None) -> LimiterResult:
         When no network of the series meets the spec; its message says what can be met.
     """
     s = checked(spec)
+    if board:
+        supply_rated(s)
     found = solve(s)
     r7, network = found["r7"], found["network"]
     if r7 is None:
@@ -110,7 +125,94 @@ def design(spec: dict | None = None) -> LimiterResult:
         binding="the lowest trip current" if m_lo <= m_hi else "the highest trip current",
         evaluated=found["evaluated"], r7_tried=found["tried"], margin_bound=found["bound"],
         r7_proven=not found["unproven"], best_proven=found["proven"], unproven=found["unproven"])
+    result["v_drop"] = float(v["i_trip_max"]) * r7 * (1 + s["r7_tolerance"])
+    if board and result["v_drop"] > s["v_drop_max"]:  # R7 is the smallest that meets the window: no larger one drops less
+        raise Infeasible(TABLE, f"the smallest R7 that keeps every corner inside {s['i_no_trip']:g} .. "
+                         f"{s['i_must_trip']:g} A is {eng(r7, 'Ω', 3)}, which drops {result['v_drop']:.3g} V at the "
+                         f"highest trip current, more than v_drop_max = {s['v_drop_max']:g} V: allow that drop, widen the "
+                         "window or tighten the tolerances (a narrower trip spread needs a smaller sense voltage)",
+                         {"v_drop_min": result["v_drop"], "r7": r7})
+    result["r7_rating"], result["r7_package"] = ratings.resistor(result["p_r7"], ambient(s))
+    if board or net.zener_range(s)[1] < s["v_supply_min"] - 0.5:
+        result.update(zener_feed(s, float(v["divider_current"])))
+    else:
+        result.update(r14=None, p_r14=None, i_zener_min=None, p_zener=None)
     return LimiterResult(**result, warnings=tuple(warnings(result, s)))
+
+
+def ambient(s: dict) -> float:
+    """The limiter's highest ambient, C: 25 C plus ``temp_span`` (the span its zener drift is taken over).
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table; ``temp_span`` (K) is read.
+
+    Returns
+    -------
+    float
+        The highest ambient, C.
+    """
+    return 25.0 + s["temp_span"]
+
+
+def supply_rated(s: dict) -> None:
+    """The motor supply within the IC's rating and above the zener: else nothing can be met.
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table; ``v_supply_min``, ``v_supply_max`` (V), ``ic`` and the zener's
+        figures are read.
+
+    Raises
+    ------
+    Infeasible
+        When ``v_supply_max`` is above :data:`SUPPLY_MAX` (the TDA5143/5144's V_MOT maximum), or D1 at its highest
+        leaves no room below ``v_supply_min`` for R14 to feed it.
+    """
+    if s["v_supply_max"] > SUPPLY_MAX:
+        raise Infeasible(TABLE, f"v_supply_max = {s['v_supply_max']:g} V is above the {s['ic']}'s motor supply "
+                         f"rating, V_MOT at most {SUPPLY_MAX:g} V (TDA5144 datasheet; AN94002 section 2: 'up to a "
+                         f"supply voltage of 16 V'): a higher supply needs its own regulator ahead of the IC",
+                         {"v_supply_max": SUPPLY_MAX})
+    if s["v_supply_min"] > s["v_supply_max"]:
+        raise Infeasible(TABLE, f"v_supply_min = {s['v_supply_min']:g} V is above v_supply_max = "
+                         f"{s['v_supply_max']:g} V", {"v_supply_max": s["v_supply_min"]})
+    vz_high = net.zener_range(s)[1]
+    if vz_high >= s["v_supply_min"] - 0.5:
+        raise Infeasible(TABLE, f"D1 reaches {vz_high:.3g} V at its tolerance and drift, too close to the lowest "
+                         f"supply v_supply_min = {s['v_supply_min']:g} V for R14 to feed it (at least 0.5 V across "
+                         "R14): choose a lower zener_voltage", {"zener_voltage_max": s["zener_voltage"] *
+                                                               (s["v_supply_min"] - 0.5) / vz_high})
+
+
+def zener_feed(s: dict, i_divider: float) -> dict:
+    """R14 designed: at the lowest supply, D1 at its highest and R14 at its high end, it still feeds D1 its test
+    current plus the dividers' current; its loss, and D1's, at the highest supply with D1 at its lowest.
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table (SI units).
+    i_divider : float
+        The most current the chosen dividers draw from the zener node, A.
+
+    Returns
+    -------
+    dict
+        ``r14`` (ohm, the ``r14_series`` value at or below the largest that works at ``resistor_tolerance``),
+        ``p_r14`` (W), ``i_zener_min`` (A) and ``p_zener`` (W, all of R14's current in D1: the dividers at their
+        least may draw almost nothing).
+    """
+    vz_low, vz_high = net.zener_range(s)
+    t = s["resistor_tolerance"]
+    largest = (s["v_supply_min"] - vz_high) / (s["zener_test_current"] + i_divider) / (1 + t)
+    r14 = series.at_most(s["r14_series"], largest)
+    i_max = (s["v_supply_max"] - vz_low) / (r14 * (1 - t))
+    return {"r14": r14, "p_r14": i_max ** 2 * r14 * (1 - t),
+            "i_zener_min": (s["v_supply_min"] - vz_high) / (r14 * (1 + t)) - i_divider,
+            "p_zener": vz_high * i_max}
 
 
 def warnings(r: dict, s: dict) -> list[str]:
@@ -137,9 +239,15 @@ def warnings(r: dict, s: dict) -> list[str]:
     if r["i_trip_max"] > limit:
         out.append(f"the highest trip current {r['i_trip_max']:.3g} A is above the {s['ic']}'s own output "
                    f"limit (minimum {limit:g} A): on some boards the IC limits first")
-    if r["p_r7"] > s["r7_power_rating"]:
+    if r["r7_rating"] > s["r7_power_rating"]:
         out.append(f"R7 dissipates up to {r['p_r7']:.3g} W while the limiter holds a stalled motor at the highest "
-                   f"trip current: more than its {s['r7_power_rating']:g} W rating (r7_power_rating)")
+                   f"trip current: at 50 % of its rating at {ambient(s):g} C that needs a {r['r7_rating']:.3g} W part "
+                   f"({r['r7_package']}), above r7_power_rating = {s['r7_power_rating']:g} W")
+    zener_need = 0.0 if r["p_zener"] is None else ratings.power_needed(r["p_zener"], ambient(s), ratings.ZENER["knee"],
+                                                                        ratings.ZENER["zero"])
+    if zener_need > ratings.ZENER["rating"]:
+        out.append(f"D1 dissipates up to {r['p_zener'] * 1e3:.3g} mW at the highest supply: more than 50 % of a "
+                   f"500 mW BZX79 at {ambient(s):g} C; use a 1.3 W zener or feed it less (a narrower supply range)")
     vz_high = s["zener_voltage"] * (1 + s["zener_tolerance"])
     if vz_high >= SUPPLY_MAX:
         out.append(f"D1 reaches {vz_high:.3g} V at its tolerance ({s['zener_voltage']:g} V nominal): at or above the "
