@@ -172,13 +172,23 @@ def cmd_design(args) -> int:
                     print(f"warning: --spice: [{table}] {warning}", file=sys.stderr)
         except (spice.SpiceUnavailable, spice.SpiceError) as exc:
             return _design_error(args, 4, f"--spice: {exc}")
-    if args.bom and not failed:
-        try:
-            bom.write(bom.rows(results), args.bom)
-        except OSError as exc:
-            return _design_error(args, 2, f"cannot write {args.bom}: {exc.strerror}")
+    if args.bom:  # the tables the spec asked for that designed; what was left out is said
+        asked = spec.asked
+        rows = bom.rows({t: r for t, r in designed.items() if t in asked})
+        left = [t for t in asked if t in failed]
+        for t in left:
+            print(f"bom: [{t}] left out: it cannot be met (above)", file=sys.stderr)
+        if rows:
+            try:
+                bom.write(rows, args.bom)
+            except OSError as exc:
+                return _design_error(args, 2, f"cannot write {args.bom}: {exc.strerror}")
+        else:
+            print(f"bom: nothing designed, {args.bom} not written", file=sys.stderr)
+        out["bom"] = {"rows": rows, "units": bom.UNITS, "left_out": left,
+                      "not_asked": [t for t in specmod.TABLES if t not in asked]}
     if args.json:
-        print(json.dumps(out, indent=1, default=float))
+        print(json.dumps({**out, **specmod.traced(spec)}, indent=1, default=float))
     else:
         _print_designs(out, failed)
     return 3 if failed else 0
@@ -322,7 +332,9 @@ def main(argv=None) -> int:
     p.add_argument("spec", nargs="?", help="TOML file with optional [commutation], [current_limiter], [class_d], "
                    "[converter] tables")
     p.add_argument("--json", action="store_true", help="one JSON object, SI units")
-    p.add_argument("--bom", metavar="FILE.csv", help="also write a bill of materials (written only when every table designs)")
+    p.add_argument("--bom", metavar="FILE.csv",
+                   help="also write a bill of materials (CSV; the same rows in --json): the tables the spec wrote (all "
+                   "four if none), each part with its rating; a table that cannot be met is left out and named")
     p.add_argument("--spice", action="store_true",
                    help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
     p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")

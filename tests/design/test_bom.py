@@ -1,11 +1,23 @@
-"""The bill of materials (handbook.design.bom): every part a person reads with its unit, the values those of
-the designs, and a CSV written whole or not at all."""
+"""The bill of materials (handbook.design.bom): every part with a rating that carries its worst-case stress
+(recomputed here from the designs' own figures and the datasheets' numbers, not through the BOM's code),
+designators unique across the sheets, only the tables a spec asked for, and a CSV written whole or not at all."""
 import csv
+import json
 import os
+import subprocess
+import sys
 
 import pytest
 
 from handbook.design import bom, spec
+
+#: the derating convention the BOM states, written out again: 50 % of the rating at the highest ambient, the
+#: resistor rating falling linearly from 70 C to zero at 155 C; the BZX79's 500 mW from 50 C to zero at 200 C
+HALF = 0.5
+
+
+def _left(t, knee=70.0, zero=155.0):
+    return max(0.0, min(1.0, (zero - t) / (zero - knee)))
 
 
 @pytest.fixture(scope="module")
@@ -13,34 +25,101 @@ def designs():
     return spec.run({})
 
 
-@pytest.mark.parametrize("ref, value, text", [("C3", 18e-9, "18 nF"), ("R9", 1210.0, "1.21 kΩ"), ("L1, L2", 100e-6, "100 µH"),
-                                              ("D1", 8.2, "8.2 V"), ("heat sink", 0.6812, "0.681 K/W"),
-                                              ("R7", 0.43, "430 mΩ")])
-def test_readable_values_carry_their_unit(ref, value, text):
-    assert bom.readable(ref, value, "E24") == text
+@pytest.fixture(scope="module")
+def table(designs):
+    return {d: r for r in bom.rows(designs) for d in r["designator"].split()}
 
 
-def test_rows_are_the_designs_values_in_order(designs):
+def test_designators_are_unique_and_carry_their_sheet(designs):
     rows = bom.rows(designs)
-    refs = [r["reference"] for r in rows]
-    assert refs[:2] == ["C3", "C4"] and refs[refs.index("R7"):refs.index("R7") + 7] == [
-        "R7", "R9", "R10", "R11", "R12", "R13", "D1"]
-    assert refs[-2:] == ["L1 (TCA5600)", "R1 (TCA5600)"]
-    by = {r["reference"]: r for r in rows}
-    lim, cd = designs["current_limiter"], designs["class_d"]
-    assert by["R7"]["value"] == lim.r7 and by["R13"]["value"] == lim.network[4]
-    assert by["C_BYP"]["value"] == cd.c_out and by["heat sink"]["tolerance"] is None
-    assert all(r["reason"] and r["value_text"][-1] not in "0123456789" for r in rows)  # every value with a unit
+    refs = [d for r in rows for d in r["designator"].split()]
+    assert len(refs) == len(set(refs)) == sum(r["quantity"] for r in rows)
+    assert {r.split("-")[0] for r in refs} == {"A1", "A2", "A3", "A4"}
+    assert {"A1-C3", "A2-R7", "A2-R14", "A2-D1", "A3-L1", "A3-L2", "A4-L1", "A4-R1", "A3-HS1", "A2-IC2"} <= set(refs)
+    assert all(r["reason"] and "\n" not in r["reason"] and len(r["reason"]) < 200 for r in rows)  # one line
+    assert all(r["value"] is None or r["value_text"][-1] not in "0123456789" for r in rows)  # values with units
+
+
+def test_every_rating_covers_its_worst_case_stress(designs, table):
+    """Each stress recomputed from the design's figures: R7 holding a stall at the highest trip current; the
+    dividers' strings with D1 at its highest; R14 and D1 at the highest supply; the timing capacitors at the
+    TDA5144's 18 V V_P maximum; C_BYP at 2 V_s; the class-D inductors at 1.2 x their worst peak; the converter's
+    sense resistor at I_rms^2 R1."""
+    lim, cd, cv = designs["current_limiter"], designs["class_d"], designs["converter"]
+    s = lim.spec
+    t_a = 25 + s["temp_span"]
+    t = s["resistor_tolerance"]
+    vz_hi = s["zener_voltage"] * (1 + s["zener_tolerance"]) + s["zener_tc"] * s["temp_span"]
+    vz_lo = s["zener_voltage"] * (1 - s["zener_tolerance"]) - s["zener_tc"] * s["temp_span"]
+    i_ref = vz_hi / ((lim.r9 + lim.r10 + lim.r11) * (1 - t))
+    i_shift = vz_hi / ((lim.r12 + lim.r13) * (1 - t))
+    i_r14 = (s["v_supply_max"] - vz_lo) / (lim.r14 * (1 - t))
+    power = {"A2-R7": lim.i_trip_max ** 2 * lim.r7 * (1 - s["r7_tolerance"]),
+             **{f"A2-R{n}": i_ref ** 2 * getattr(lim, f"r{n}") * (1 + t) for n in (9, 10, 11)},
+             **{f"A2-R{n}": i_shift ** 2 * getattr(lim, f"r{n}") * (1 + t) for n in (12, 13)},
+             "A2-R14": i_r14 ** 2 * lim.r14 * (1 - t),
+             "A4-R1": cv.i_rms ** 2 * cv.r1_part * (1 + cv.spec["r1_tolerance"])}
+    for ref, p in power.items():
+        amb = cv.spec["t_ambient"] if ref.startswith("A4") else t_a
+        assert table[ref]["power_rating"] * HALF * _left(amb) >= p * (1 - 1e-12), ref
+    assert table["A2-R7"]["power_rating"] == 3.0  # 1.25 W needs 2.5 W: the 3 W class, not the note's 1 W PR01
+    p_zener = vz_hi * i_r14
+    assert table["A2-D1"]["power_rating"] * HALF * _left(t_a, 50, 200) >= p_zener
+    for ref in ("A1-C3", "A1-C4"):
+        assert table[ref]["voltage_rating"] * HALF >= 18.0
+    assert table["A3-C1"]["voltage_rating"] * HALF >= 2 * cd.spec["supply"]
+    assert table["A3-L1"]["current_rating"] >= 1.2 * float(cd.figures["i_peak"])
+    assert table["A3-L1"]["current_rating"] != cd.spec["i_sat"]  # the design's peak, not the input copied
+    assert table["A4-L1"]["current_rating"] > cv.i_peak_max
+    assert table["A3-HS1"]["rating_text"].startswith(f"θ_SA at most {cd.theta_sa_required:.3g} K/W")
+    # the technology where the design depends on it: C0G or film for timing, film across the load
+    assert table["A1-C3"]["technology"].startswith(("C0G", "polypropylene")) and "film" in table["A3-C1"]["technology"]
+    assert "TDK" in table["A4-L1"]["technology"] and cv.core_shape in table["A4-L1"]["technology"]
+
+
+def test_a_hot_board_needs_a_larger_rating():
+    """At 120 C the resistor curve leaves (155 - 120) / 85 of the rating: R7's class goes up."""
+    cool = spec.run({})["current_limiter"]
+    hot = spec.run({"current_limiter": {"temp_span": 95.0, "v_drop_max": 3.0}})["current_limiter"]
+    assert hot.r7_rating * HALF * _left(120.0) >= hot.p_r7 and hot.r7_rating > cool.r7_rating
+
+
+def _design(tmp_path, text, *extra):
+    path = tmp_path / "spec.toml"
+    path.write_text(text)
+    return subprocess.run([sys.executable, "-m", "handbook", "design", str(path), "--bom", str(tmp_path / "bom.csv"),
+                           "--json", *extra], capture_output=True, text=True, timeout=300)
+
+
+def test_a_partial_spec_gives_a_partial_bom_and_traceable_json(tmp_path):
+    proc = _design(tmp_path, "[class_d]\np_out = 50.0\n")
+    assert proc.returncode == 0, proc.stderr
+    out = json.loads(proc.stdout)
+    rows = list(csv.DictReader((tmp_path / "bom.csv").open(encoding="utf-8")))
+    assert rows and {r["sheet"] for r in rows} == {"A3"} and [r["designator"] for r in rows] == [
+        r["designator"] for r in out["bom"]["rows"]]
+    assert out["bom"]["not_asked"] == ["commutation", "current_limiter", "converter"]
+    assert out["spec"]["class_d"]["p_out"] == 50.0 and out["spec"]["current_limiter"]["i_no_trip"] == 0.9
+    assert out["units"]["class_d"]["theta_sa_required"] == "K/W" and len(out["spec_sha256"]) == 64
+    assert out["version"]
+
+
+def test_an_infeasible_table_is_left_out_and_named(tmp_path):
+    proc = _design(tmp_path, "[class_d]\np_out = 500.0\n[current_limiter]\n")
+    assert proc.returncode == 3
+    assert "bom: [class_d] left out: it cannot be met" in proc.stderr
+    rows = list(csv.DictReader((tmp_path / "bom.csv").open(encoding="utf-8")))
+    assert {r["sheet"] for r in rows} == {"A2"} and json.loads(proc.stdout)["bom"]["left_out"] == ["class_d"]
 
 
 def test_write_is_whole_or_nothing(tmp_path, designs):
     rows = bom.rows(designs)
     path = tmp_path / "bom.csv"
     bom.write(rows, path)
-    back = list(csv.DictReader(path.open()))
-    assert [r["reference"] for r in back] == [r["reference"] for r in rows]
-    assert float(back[0]["value"]) == rows[0]["value"]
+    back = list(csv.DictReader(path.open(encoding="utf-8")))
+    assert [r["designator"] for r in back] == [r["designator"] for r in rows]
+    assert float(back[1]["value"]) == rows[1]["value"] and back[0]["value"] == ""  # an IC has no value
     path.write_text("old")
-    with pytest.raises(ValueError):  # a row with a field the CSV does not have: nothing replaces the old file
-        bom.write(rows + [{"reference": "X", "colour": "red"}], path)
+    with pytest.raises(KeyError):  # a row without a column: nothing replaces the old file
+        bom.write(rows + [{"designator": "X"}], path)
     assert path.read_text() == "old" and os.listdir(tmp_path) == ["bom.csv"]

@@ -1,4 +1,14 @@
-"""Bill of materials: the chosen parts with the reason for each value, written atomically as CSV."""
+"""Bill of materials: every chosen part with the rating that carries its worst-case stress, as CSV and JSON.
+
+One sheet per design, its designators prefixed with the sheet (:data:`SHEETS`: ``A2-R7`` is R7 of the current
+limiter), so the four circuits' parts never collide; within a sheet the source's own designators where it
+names the part (AN94002's C3, R7, R14, D1, IC1), else numbered on that sheet. Each row holds the value with
+its unit, the tolerance the design assumed, the rating it needs under :mod:`handbook.design.ratings`'
+convention (stated in the row), the technology or dielectric where the design depends on it, a package class
+that carries the rating (never a part number that was not read from a catalogue: magnetics name the core and
+material of PyOpenMagnetics' database), the temperature coefficient where the design's corners depend on it,
+and the reason in one line.
+"""
 from __future__ import annotations
 
 import csv
@@ -6,72 +16,218 @@ import os
 import tempfile
 from pathlib import Path
 
+from ..core.units import eng
+from . import ratings
 
-def rows(result: dict) -> list[dict]:
-    """Reference, value (SI, for programs), value_text (with its unit, for people), tolerance, series, and why
-    each value was chosen.
+#: design table -> (sheet prefix, the circuit)
+SHEETS = {"commutation": ("A1", "TDA5144 timers (AN94002 2.1)"),
+          "current_limiter": ("A2", "op-amp current limiter (AN94002 figure 3)"),
+          "class_d": ("A3", "LM4651/LM4652 class-D amplifier"),
+          "converter": ("A4", "TCA5600 dc/dc converter")}
+
+#: the CSV's columns (the JSON rows have the same keys)
+COLUMNS = ("sheet", "designator", "quantity", "part", "value", "unit", "value_text", "tolerance", "power_rating",
+           "voltage_rating", "current_rating", "rating_text", "stress", "technology", "package", "tempco", "reason")
+
+#: units of the numeric columns (the JSON's ``units`` map)
+UNITS = {"value": "the row's unit", "tolerance": "fraction", "power_rating": "W", "voltage_rating": "V",
+         "current_rating": "A", "stress": "the rating's unit (W, V or A)"}
+
+#: the highest voltage any TDA5144 pin may carry: its supply V_P, at most 18 V (TDA5144 datasheet)
+TDA5144_VP_MAX = 18.0
+#: the voltage across the LM4651's R_OSC and R_DLY, at most (an assumption: the pins set bias currents and the
+#: datasheet gives no pin voltage; 5 V bounds a bias reference of this kind)
+PIN_VOLTAGE = 5.0
+
+
+def _row(sheet: str, refs: str, part: str, value, unit: str, tolerance=None, *, power=None, voltage=None,
+         current=None, rating_text="", stress=None, technology="", package="", tempco="", reason="") -> dict:
+    refs_ = [f"{sheet}-{r}" for r in refs.split()]
+    shown = value if isinstance(value, str) else eng(value, unit)
+    return {"sheet": sheet, "designator": " ".join(refs_), "quantity": len(refs_), "part": part,
+            "value": None if isinstance(value, str) else float(value), "unit": unit, "value_text": shown,
+            "tolerance": tolerance, "power_rating": power, "voltage_rating": voltage, "current_rating": current,
+            "rating_text": rating_text, "stress": stress, "technology": technology, "package": package,
+            "tempco": tempco, "reason": reason}
+
+
+def _cap_class(c: float) -> tuple[str, str, str]:
+    """(technology, package class, tempco) of a timing capacitor: C0G up to 100 nF, polypropylene film above."""
+    if c <= 100e-9:
+        package = next(p for top, p in ((1e-9, "0603 chip"), (10e-9, "0805 chip"), (47e-9, "1206 chip"),
+                                        (100e-9, "1210 chip")) if c <= top * (1 + 1e-9))
+        return "C0G/NP0 ceramic", package, "0 ± 30 ppm/K"
+    return "polypropylene film", _film_package(c), "−200 ppm/K"
+
+
+def _film_package(c: float) -> str:
+    return next((p for top, p in ((1e-6, "radial film, 5 mm pitch"), (2.2e-6, "radial film, 7.5 mm pitch"),
+                                  (10e-6, "radial film, 15 mm pitch"), (47e-6, "radial film, 27.5 mm pitch"))
+                 if c <= top * (1 + 1e-9)), "film, chassis-mount")
+
+
+def _resistor(sheet, ref, part, value, tolerance, series, p_worst, t_ambient, why, technology="metal film",
+              tempco="≤ 100 ppm/K") -> dict:
+    rating, package = ratings.resistor(p_worst, t_ambient)
+    return _row(sheet, ref, part, value, "Ω", tolerance, power=rating, stress=p_worst, technology=technology,
+                package=package, tempco=tempco,
+                rating_text=f"{eng(rating, 'W')}: {eng(p_worst, 'W')} at most at {t_ambient:g} °C, 50 % derating",
+                reason=f"{series} value; {why}" if series else why)
+
+
+def commutation_rows(c, ic: str = "TDA5144") -> list[dict]:
+    """The timing capacitors of the TDA5144 (C3 CAP-CD, C4 CAP-DC, C5 CAP-ST, C6 CAP-TI, as AN94002's parts
+    list numbers them) and the IC.
 
     Parameters
     ----------
-    result : dict
-        The four designs' results, {table: result}: ``result["commutation"]`` a
-        :class:`~handbook.design.commutation.CommutationResult`, ``"current_limiter"`` a
-        :class:`~handbook.design.limiter.LimiterResult`, ``"class_d"`` a :class:`~handbook.design.class_d.ClassDResult`
-        and ``"converter"`` a :class:`~handbook.design.converter.ConverterResult` (what
-        :func:`handbook.design.spec.run` returns).
+    c : CommutationResult
+        The commutation design (:func:`handbook.design.commutation.design`).
+    ic : str
+        The motor IC's type.
 
     Returns
     -------
     list of dict
-        One row per part, in the order C3, C4 (C5, C6 when designed), R7, R9..R13, D1, R_OSC, R_DLY, L1/L2,
-        C_BYP, heat sink, then the converter's L1 and R1: ``reference`` (str), ``value`` (float, SI: F, ohm, H,
-        the zener's V, the heat sink's K/W), ``value_text`` (str, with its unit), ``tolerance`` (fraction, or None
-        for the heat sink), ``series`` (str, "" where none) and ``reason`` (str).
+        The rows (keys :data:`COLUMNS`); C5 and C6 only when designed (motor data, flyback time given).
     """
-    c, lim, cd, cv = result["commutation"], result["current_limiter"], result["class_d"], result["converter"]
-    sc, sl, sd = c.spec, lim.spec, cd.spec
-    table = [
-        ("C3", c.cap_cd, sc["tolerance"], sc["series"],
-         f"CAP-CD: smallest value whose swing at {sc['rpm_min']:g} rpm fits the {sc['v_high_min']:g} V - "
-         f"{sc['v_low_max']:g} V window at every tolerance corner; reliable {c.rpm_min_reliable:.0f} to "
-         f"{c.rpm_max_reliable:.0f} rpm"),
-        ("C4", c.cap_dc, sc["tolerance"], sc["series"], "CAP-DC: the slave timer needs the same value as CAP-CD"),
-        *([("C5", c.cap_st, sc["tolerance"], sc["series"],
-            f"CAP-ST: smallest value whose shortest start period ({c.start.period_min:.3g} s) outlasts the decay of "
-            f"the slowest rotor rocking ({c.start.f_osc_min:.3g} Hz) to {sc['residual']:g}")] if c.start else []),
-        *([("C6", c.cap_ti, sc["tolerance"], sc["series"],
-            f"CAP-TI: watchdog {c.watchdog.t_wd_min * 1e3:.3g} to {c.watchdog.t_wd_max * 1e3:.3g} ms outlasts the "
-            f"{sc['flyback_time'] * 1e3:.3g} ms flyback; catches reverse rotation up to "
-            f"{c.watchdog.rpm_reverse_caught:.0f} rpm")] if c.watchdog else []),
-        ("R7", lim.r7, sl["r7_tolerance"], sl["r7_series"],
-         f"current sense: smallest value with which every board's trip current stays in {sl['i_no_trip']:g}.."
-         f"{sl['i_must_trip']:g} A with a {sl['min_margin']:.0%} margin ({lim.i_trip_min:.3f}..{lim.i_trip_max:.3f} A "
-         f"at the worst corners); up to {lim.p_r7:.3g} W while it holds a stalled motor"),
-        *((f"R{n}", getattr(lim, f"r{n}"), sl["resistor_tolerance"], sl[f"r{n}_series"],
-           ("pinned by the spec; " if sl[f"r{n}"] is not None else "")
-           + f"{role}: network of the largest worst margin with this R7 ({lim.binding} binds)")
-          for n, role in ((9, "trip reference"), (10, "reference divider"), (11, "reference divider"),
-                          (12, "level shift"), (13, "level shift"))),
-        ("D1", sl["zener_voltage"], sl["zener_tolerance"], "", "zener bridging the level shift (BZX79-C8V2 on the board)"),
-        ("R_OSC", cd.r_osc, 0.01, sd["r_osc_series"],
-         f"sets f_sw = {cd.f_sw / 1e3:.1f} kHz by eq 5 ({cd.f_sw_min / 1e3:.1f} to {cd.f_sw_max / 1e3:.1f} kHz "
-         f"at the oscillator's tolerance): joint optimum ({sd['objective']}) with L and C_BYP; binds: {cd.binding}"),
-        ("R_DLY", cd.r_dly, 0.01, sd["r_dly_series"],
-         f"dead time {sd['dead_time_min'] * 1e9:.1f} ns or more (27 ns + 1.7 pF x R_DLY), the least: more costs THD"),
-        ("L1, L2", cd.l_out, sd["l_tolerance"], sd["l_series"],
-         f"bridge output filter, one per output; saturation {sd['i_sat']:g} A or more"),
-        ("C_BYP", cd.c_out, sd["c_tolerance"], sd["c_series"], "bridge output filter across the load, film"),
-        ("heat sink", cd.theta_sa_required, None, "",
-         f"LM4652 heat sink of {cd.theta_sa_required:.2f} K/W or better (thermal resistance, sink to air): T_j "
-         f"{cd.t_junction:.0f} °C at worst"),
-        *converter_rows(cv),
+    sheet, s = SHEETS["commutation"][0], c.spec
+    v_rating = ratings.capacitor_voltage(TDA5144_VP_MAX)
+    rows = [_row(sheet, "IC1", f"{ic} BLDC motor driver", ic, "", reason="the motor IC the timers belong to")]
+    caps = [("C3", "CAP-CD", c.cap_cd, f"commutation delay: smallest value whose swing at {s['rpm_min']:g} rpm fits "
+             f"the switching window at every corner ({c.rpm_min_reliable:.0f} to {c.rpm_max_reliable:.0f} rpm)"),
+            ("C4", "CAP-DC", c.cap_dc, "the slave timer: the same value as CAP-CD")]
+    if c.cap_st is not None:
+        caps.append(("C5", "CAP-ST", c.cap_st, "start oscillator: outlasts the rotor's rocking at every corner"))
+    if c.cap_ti is not None:
+        caps.append(("C6", "CAP-TI", c.cap_ti, "watchdog: outlasts the longest flyback pulse"))
+    for ref, name, value, why in caps:
+        tech, package, tempco = _cap_class(value)
+        rows.append(_row(sheet, ref, f"{name} timing capacitor", value, "F", s["tolerance"], voltage=v_rating,
+                         stress=TDA5144_VP_MAX, technology=tech, package=package, tempco=tempco,
+                         rating_text=f"{v_rating:g} V: any pin may reach V_P, at most {TDA5144_VP_MAX:g} V, 50 % "
+                                     "derating", reason=f"{s['series']} value; {why}"))
+    return rows
+
+
+def limiter_rows(lim) -> list[dict]:
+    """The op-amp limiter's parts: R7, R9..R14, D1, the LM358 (IC2, as AN94002's parts list).
+
+    Parameters
+    ----------
+    lim : LimiterResult
+        The limiter design (:func:`handbook.design.limiter.design`).
+
+    Returns
+    -------
+    list of dict
+        The rows (keys :data:`COLUMNS`).
+    """
+    from .limiter.model import zener_range
+    from .limiter.result import ambient
+
+    sheet, s = SHEETS["current_limiter"][0], lim.spec
+    t_a = ambient(s)
+    vz_low, vz_high = zener_range(s)
+    rows = [_row(sheet, "IC2", "LM358 dual op-amp", "LM358", "", reason="the comparator of AN94002 figure 3")]
+    rows.append(_row(sheet, "R7", "current-sense resistor", lim.r7, "Ω", s["r7_tolerance"], power=lim.r7_rating,
+                     stress=lim.p_r7, technology="metal film or metal strip, current sense", package=lim.r7_package,
+                     tempco="≤ 100 ppm/K (min_margin covers about 1 %)",
+                     rating_text=f"{eng(lim.r7_rating, 'W')}: {eng(lim.p_r7, 'W')} holding a stalled motor at "
+                                 f"{t_a:g} °C, 50 % derating",
+                     reason=f"{s['r7_series']} value; the smallest that keeps every corner's trip in "
+                            f"{s['i_no_trip']:g} to {s['i_must_trip']:g} A; drops {eng(lim.v_drop, 'V')}"))
+    t = s["resistor_tolerance"]
+    current = {9: vz_high / ((lim.r9 + lim.r10 + lim.r11) * (1 - t)), 12: vz_high / ((lim.r12 + lim.r13) * (1 - t))}
+    current.update({10: current[9], 11: current[9], 13: current[12]})  # each divider's string carries one current
+    for n, role in ((9, "trip reference"), (10, "reference divider"), (11, "reference divider"),
+                    (12, "level shift"), (13, "level shift")):
+        value = getattr(lim, f"r{n}")
+        rows.append(_resistor(sheet, f"R{n}", f"{role} resistor", value, t, s[f"r{n}_series"],
+                              current[n] ** 2 * value * (1 + t), t_a, "network of the largest worst margin with this R7"
+                              + (" (pinned by the spec)" if s[f"r{n}"] is not None else ""),
+                              technology="thin or metal film, one type for R9..R13",
+                              tempco="≤ 50 ppm/K, the same type (the trip depends on their ratios)"))
+    if lim.r14 is not None:
+        rows.append(_resistor(sheet, "R14", "zener feed resistor", lim.r14, s["resistor_tolerance"], s["r14_series"],
+                              lim.p_r14, t_a, f"feeds D1 its {eng(s['zener_test_current'], 'A')} test current plus "
+                              f"the dividers' at {s['v_supply_min']:g} V"))
+        need = ratings.power_needed(lim.p_zener, t_a, ratings.ZENER["knee"], ratings.ZENER["zero"])
+        name = _zener_name(s["zener_voltage"])
+        rows.append(_row(sheet, "D1", "reference zener", s["zener_voltage"], "V", s["zener_tolerance"],
+                         power=ratings.ZENER["rating"], stress=lim.p_zener, technology=f"{name}, DO-35 glass",
+                         package="DO-35", tempco=f"up to {eng(s['zener_tc'], 'V')}/K",
+                         rating_text=f"500 mW series: {eng(lim.p_zener, 'W')} at {s['v_supply_max']:g} V needs "
+                                     f"{eng(need, 'W')} at {t_a:g} °C (50 % derating)",
+                         reason=f"bridges both dividers; {eng(vz_low, 'V')} to {eng(vz_high, 'V')} with drift"))
+    return rows
+
+
+def _zener_name(v: float) -> str:
+    """The BZX79-C name of a zener voltage of its E24 series (8.2 V -> BZX79-C8V2), else 'zener'."""
+    from ..core import series
+
+    if abs(series.nearest("E24", v) - v) > 1e-9 or not 2.4 <= v <= 75:
+        return "zener"
+    text = f"{v:.2g}" if v < 10 else f"{v:.0f}"
+    return "BZX79-C" + (text.replace(".", "V") if "." in text else text + "V")
+
+
+def class_d_rows(cd) -> list[dict]:
+    """The class-D parts: the LM4651 (U1) and LM4652 (U2), R_OSC (R1), R_DLY (R2), the filter's two inductors
+    (L1, L2) and C_BYP (C1), and the heat sink (HS1), numbered on their sheet.
+
+    Parameters
+    ----------
+    cd : ClassDResult
+        The class-D design (:func:`handbook.design.class_d.design`).
+
+    Returns
+    -------
+    list of dict
+        The rows (keys :data:`COLUMNS`).
+    """
+    sheet, s, fig = SHEETS["class_d"][0], cd.spec, cd.figures
+    t_a = s["t_ambient"]
+    i_peak = float(fig["i_peak"])
+    i_sat = ratings.SATURATION_MARGIN * i_peak
+    i_rms = (cd.p_thermal / s["r_load"]) ** 0.5
+    v_c = 2 * s["supply"]
+    v_rating = ratings.capacitor_voltage(v_c)
+    pin = PIN_VOLTAGE ** 2  # R_OSC and R_DLY each carry at most PIN_VOLTAGE
+    return [
+        _row(sheet, "U1", "LM4651 class-D PWM driver", "LM4651", "", reason="drives the LM4652"),
+        _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "",
+             reason="the output stage; its heat sink is HS1"),
+        _resistor(sheet, "R1", "R_OSC, oscillator", cd.r_osc, 0.01, s["r_osc_series"], pin / cd.r_osc, t_a,
+                  f"sets {eng(cd.f_sw, 'Hz')} by eq 5 ({eng(cd.f_sw_min, 'Hz')} to {eng(cd.f_sw_max, 'Hz')} at the "
+                  "oscillator's tolerance)"),
+        _resistor(sheet, "R2", "R_DLY, dead time", cd.r_dly, 0.01, s["r_dly_series"], pin / max(cd.r_dly, 1.0), t_a,
+                  f"dead time at least {s['dead_time_min'] * 1e9:.0f} ns"),
+        _row(sheet, "L1 L2", "output filter inductor, one per bridge output", cd.l_out, "H", s["l_tolerance"],
+             current=i_sat, stress=i_peak, technology="powder or gapped ferrite core, low-loss at the switching "
+             "frequency", package="power inductor",
+             rating_text=f"saturation ≥ {eng(i_sat, 'A')} (1.2 × the worst peak {eng(i_peak, 'A')}, audio plus "
+                         f"ripple at clipping); rms ≥ {eng(i_rms, 'A')} at the thermal basis; "
+                         f"DCR ≤ {eng(s['l_dcr'] * cd.l_out, 'Ω')}",
+             reason=f"{s['l_series']} value; the filter's corner {eng(cd.f_corner, 'Hz')}"),
+        _row(sheet, "C1", "C_BYP, output filter capacitor", cd.c_out, "F", s["c_tolerance"], voltage=v_rating,
+             stress=v_c, technology="polyester or polypropylene film (the datasheet's Mylar)",
+             package=_film_package(cd.c_out), tempco="",
+             rating_text=f"{v_rating:g} V: the bridge swings ±{s['supply']:g} V per side, up to {v_c:g} V across "
+                         "it, 50 % derating",
+             reason=f"{s['c_series']} value; across the load"),
+        _row(sheet, "HS1", "LM4652 heat sink", f"≤ {cd.theta_sa_required:.3g} K/W", "K/W",
+             rating_text=f"θ_SA at most {cd.theta_sa_required:.3g} K/W carrying {eng(cd.p_dissipation, 'W')} at "
+                         f"{t_a:g} °C ambient",
+             stress=cd.p_dissipation, technology="extruded aluminium, with thermal grease (θ_CS "
+             f"{s['theta_cs']:g} K/W)", package="TO-220 mount",
+             reason=f"sized at {cd.thermal_basis}: {eng(cd.p_thermal, 'W')} of output"),
     ]
-    return [{"reference": r, "value": v, "value_text": readable(r, v, ser), "tolerance": t, "series": ser, "reason": why}
-            for r, v, t, ser, why in table]
 
 
-def converter_rows(cv) -> list[tuple]:
-    """The TCA5600 converter's coil and sense resistor (the class-D filter already uses L1, L2).
+def converter_rows(cv) -> list[dict]:
+    """The TCA5600 converter's parts: the IC (U1), the coil (L1) and the sense resistor (R1), on their sheet.
 
     Parameters
     ----------
@@ -80,59 +236,60 @@ def converter_rows(cv) -> list[tuple]:
 
     Returns
     -------
-    list of tuple
-        Two rows, (reference, value, tolerance, series, reason): the coil "L1 (TCA5600)" (its nominal
-        inductance, H; A_L's tolerance as a fraction; no series) and "R1 (TCA5600)" (the series part, ohm;
-        R1's tolerance as a fraction; ``r1_series``).
+    list of dict
+        The rows (keys :data:`COLUMNS`): the coil by its core shape, material and maker as PyOpenMagnetics'
+        database names them, wound to order.
     """
-    from ..core.units import eng
+    from .converter import cores
 
-    sv = cv.spec
+    sheet, s = SHEETS["converter"][0], cv.spec
+    t_a = s["t_ambient"]
+    maker = cores.load()["materials"][cv.core_material]["manufacturer"]
+    i_sat = cv.i_peak_max / (1 - cv.saturation_margin)  # B is linear in I: the margin is 1 - B_peak / B_sat
+    p_r1 = cv.i_rms ** 2 * cv.r1_part * (1 + s["r1_tolerance"])
     return [
-        ("L1 (TCA5600)", cv.l1_nominal, sv["a_l_tolerance"], "",
-         f"eq 6 gives L1 = {eng(cv.l1, 'H')} as the largest inductance (a larger L or peak current runs slower than "
-         f"f_min = {eng(sv['f_min'], 'Hz')} at VCC2 = {eng(sv['v_supply_min'], 'V')}): wound for "
-         f"{eng(cv.l1_nominal, 'H')}, which at +{sv['a_l_tolerance']:.0%} A_L with R1 at its low end still keeps "
-         f"f_min; {cv.turns} turns of {cv.wire} on {cv.core_shape} in {cv.core_material}, A_L {eng(cv.a_l, 'H')} "
-         f"(centre gap about {eng(cv.gap, 'm')} by PyOpenMagnetics' gap model; grind to A_L); "
-         f"{cv.saturation_margin:.0%} of saturation left at {eng(cv.i_peak_max, 'A')}; loss "
-         f"{eng(cv.core_loss + cv.winding_loss, 'W')}, rise {cv.temperature_rise:.2g} K; binds: {cv.binding}"),
-        ("R1 (TCA5600)", cv.r1_part, sv["r1_tolerance"], sv["r1_series"],
-         f"eq 6a: V12(H) / I_peak = {sv['v12h']:g} V / {eng(cv.i_peak, 'A')} = {eng(cv.r1, 'Ω')}; the "
-         f"{sv['r1_series']} value at or below {eng(cv.r1 / (1 + sv['r1_tolerance']), 'Ω')} so that at "
-         f"+{sv['r1_tolerance']:.0%} the peak current still reaches eq 5's (the load it carries is proportional "
-         f"to it); at -{sv['r1_tolerance']:.0%} it is {eng(cv.i_peak_max, 'A')}, which the coil holds"),
+        _row(sheet, "U1", "TCA5600 dc/dc converter", "TCA5600", "", reason="the converter of the excerpt's figure 13"),
+        _row(sheet, "L1", "converter coil, wound to order", cv.l1_nominal, "H", s["a_l_tolerance"], current=i_sat,
+             stress=cv.i_peak_max, technology=f"{cv.turns} turns of {cv.wire} on {maker} {cv.core_shape}, "
+             f"{cv.core_material}, gapped to A_L {eng(cv.a_l, 'H')}", package=f"{cv.core_shape} set on its bobbin",
+             rating_text=f"saturates at about {eng(i_sat, 'A')} at {t_a + cv.temperature_rise:.3g} °C; the worst "
+                         f"peak {eng(cv.i_peak_max, 'A')} leaves {cv.saturation_margin:.0%}",
+             reason=f"eq 6: L1 {eng(cv.l1, 'H')} at most; rise {cv.temperature_rise:.2g} K"),
+        _resistor(sheet, "R1", "current-sense resistor", cv.r1_part, s["r1_tolerance"], s["r1_series"], p_r1, t_a,
+                  f"eq 6a: V12(H) / I_peak = {eng(cv.r1, 'Ω')}, rounded down"),
     ]
 
 
-#: the unit of each reference's value, by its first letter (the heat sink's is K/W)
-_UNITS = {"C": "F", "R": "ohm", "L": "H", "D": "V"}
+#: design table -> its rows
+ROWS = {"commutation": commutation_rows, "current_limiter": limiter_rows, "class_d": class_d_rows,
+        "converter": converter_rows}
 
 
-def readable(ref: str, value: float, series: str) -> str:
-    """The value as a person reads it: 18 nF, 1.21 kΩ, 100 µH, 8.2 V (zener), 0.68 K/W.
+def rows(result: dict) -> list[dict]:
+    """The BOM of the designs in ``result``, sheet by sheet (A1 timers, A2 limiter, A3 class-D, A4 converter).
 
     Parameters
     ----------
-    ref : str
-        The part's reference: its first letter gives the unit (C: F, R: ohm, L: H, D: V); "heat sink": K/W.
-    value : float
-        The part's value in that SI unit.
-    series : str
-        The part's E-series (not used: the value is shown as it is).
+    result : dict
+        {table: its design's result} for the tables to list (what :func:`handbook.design.spec.run_each`
+        designed; a table left out has no rows).
 
     Returns
     -------
-    str
-        The value with an engineering prefix and its unit (three significant figures for the heat sink; the
-        bare number for a reference of no known unit).
+    list of dict
+        One row per line item (keys :data:`COLUMNS`): designators unique across the sheets, ``quantity`` their
+        count, numbers in SI units (:data:`UNITS`), None where a column does not apply.
     """
-    from ..core.units import eng
-
-    if ref == "heat sink":
-        return f"{value:.3g} K/W"
-    unit = _UNITS.get(ref[0], "")
-    return eng(value, unit.replace("ohm", "Ω")) if unit else f"{value:g}"
+    out = []
+    for table, make in ROWS.items():
+        if table not in result:
+            continue
+        if table == "commutation":
+            ic = result["current_limiter"].spec["ic"] if "current_limiter" in result else "TDA5144"
+            out += make(result[table], ic)
+        else:
+            out += make(result[table])
+    return out
 
 
 def write(table: list[dict], path: str | Path) -> None:
@@ -141,18 +298,17 @@ def write(table: list[dict], path: str | Path) -> None:
     Parameters
     ----------
     table : list of dict
-        The rows, as :func:`rows` returns them (keys ``reference``, ``value``, ``value_text``, ``tolerance``,
-        ``series``, ``reason``).
+        The rows, as :func:`rows` returns them (keys :data:`COLUMNS`).
     path : str or pathlib.Path
         The CSV file to write (replaced if it exists); its directory must exist.
     """
     path = Path(path)
     fd, tmp = tempfile.mkstemp(prefix=".bom-", suffix=".csv", dir=path.parent if str(path.parent) else ".")
     try:
-        with os.fdopen(fd, "w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=["reference", "value", "value_text", "tolerance", "series", "reason"])
+        with os.fdopen(fd, "w", newline="", encoding="utf-8") as fh:
+            w = csv.DictWriter(fh, fieldnames=list(COLUMNS))
             w.writeheader()
-            w.writerows(table)
+            w.writerows({k: ("" if r[k] is None else r[k]) for k in COLUMNS} for r in table)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

@@ -34,9 +34,16 @@ class Spec(Mapping):
     where nothing was given), with every table checked once, at reading: ``tables`` {table: its checked
     :class:`~handbook.design.common.Table`}, which the designs take without checking again."""
 
-    def __init__(self, given: dict, tables: dict):  # read-only views: a Spec is what was read, as it was checked
+    def __init__(self, given: dict, tables: dict, written: tuple = ()):  # read-only views: what was read, checked
         self._given = MappingProxyType({t: MappingProxyType(dict(body)) for t, body in given.items()})
         self.tables = MappingProxyType(dict(tables))
+        #: the tables the document wrote (possibly empty): a BOM lists only these, or all four when none was
+        self.written = tuple(written)
+
+    @property
+    def asked(self) -> tuple:
+        """The tables this spec asks to design: those it wrote, or all four when it wrote none."""
+        return self.written or tuple(self._given)
 
     def __getitem__(self, table: str) -> dict:
         return self._given[table]
@@ -84,7 +91,7 @@ def parse(data: dict) -> Spec:
         if not isinstance(body, dict):
             raise InputError(f"{table} must be a table ([{table}]), not a value")
         given[table] = dict(body)
-    return Spec(given, {t: DESIGNS[t].checked(given[t]) for t in DESIGNS})
+    return Spec(given, {t: DESIGNS[t].checked(given[t]) for t in DESIGNS}, tuple(t for t in TABLES if t in data))
 
 
 def load(path: str | Path) -> dict:
@@ -210,4 +217,32 @@ def summary(result: dict) -> dict:
     return {t: r.summary() for t, r in result.items()}
 
 
-__all__ = ["DESIGNS", "OUTPUTS", "Spec", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each", "summary"]
+def traced(spec: Spec) -> dict:
+    """What a JSON output carries to trace a design to its input: the handbook's version, the spec as read
+    (every table after defaults, SI units), its hash, and the unit of every output.
+
+    Parameters
+    ----------
+    spec : Spec
+        The read specification (:func:`parse`, :func:`load`).
+
+    Returns
+    -------
+    dict
+        ``version`` (str), ``spec_sha256`` (hex of the canonical JSON of ``spec``), ``spec`` ({table: {key:
+        value}}, after defaults) and ``units`` ({table: {output key: unit}}; "1" a plain number, "%" a fraction,
+        "" text, "C" degrees Celsius).
+    """
+    import hashlib
+    import json
+
+    from .. import __version__
+
+    read = {t: dict(spec.tables[t]) for t in spec.tables}
+    canonical = json.dumps(read, sort_keys=True, default=str, separators=(",", ":"))
+    return {"version": __version__, "spec_sha256": hashlib.sha256(canonical.encode()).hexdigest(), "spec": read,
+            "units": {t: {o.key: o.unit for o in outs} for t, outs in OUTPUTS.items()}}
+
+
+__all__ = ["DESIGNS", "OUTPUTS", "Spec", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each",
+           "summary", "traced"]
