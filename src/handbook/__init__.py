@@ -1,2 +1,2 @@
 """Design handbook for driver ICs: app-note equations re-derived, examples recomputed, parts chosen."""
-__version__ = "0.1.0"
+from .core.version import VERSION as __version__  # noqa: F401

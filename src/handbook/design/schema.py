@@ -163,9 +163,16 @@ def _converter() -> tuple[Param, ...]:
               meaning="fraction of the bobbin's winding window the turns may fill, counted as N x (outer "
                       "diameter)^2", cite="assumption: hand or machine layer winding of enamelled round wire"),
         Param(name="current_density_max", default=5e6, unit="A/m^2", high=1e8, **_POS,
-              meaning="rms current density in the copper above which a warning is given (advisory: the "
-                      "temperature rise decides; 5 A/mm^2 = 5e6)",
-              cite="assumption: a common rule of thumb for small, naturally cooled coils"),
+              meaning="largest rms current density in the copper, a limit: a candidate whose thickest fitting wire "
+                      "carries more fails, so the coil grows to meet it (5 A/mm^2 = 5e6)",
+              cite="assumption: the usual 3 to 5 A/mm^2 of small, naturally cooled windings, which also keeps the "
+                   "copper loss the temperature rise counts modest"),
+        Param(name="audible", default="avoid", unit="", choices=("avoid", "warn"),
+              meaning="'avoid': f_min is raised until the full-load frequency stays above 20 kHz at every corner "
+                      "over the whole supply range (exit 3 with what would be needed when it cannot); 'warn': "
+                      "f_min as given, a warning where it falls into the audio band",
+              cite="TCA5600 excerpt, eq 4: the frequency 'chosen above the audio frequency band (e.g. 20 kHz)', "
+                   "sized at the lowest supply only; 'avoid' holds it at every supply"),
     )
 
 

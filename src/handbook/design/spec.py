@@ -236,11 +236,11 @@ def traced(spec: Spec) -> dict:
     import hashlib
     import json
 
-    from .. import __version__
+    from ..core.version import VERSION
 
     read = {t: dict(spec.tables[t]) for t in spec.tables}
     canonical = json.dumps(read, sort_keys=True, default=str, separators=(",", ":"))
-    return {"version": __version__, "spec_sha256": hashlib.sha256(canonical.encode()).hexdigest(), "spec": read,
+    return {"version": VERSION, "spec_sha256": hashlib.sha256(canonical.encode()).hexdigest(), "spec": read,
             "units": {t: {o.key: o.unit for o in outs} for t, outs in OUTPUTS.items()}}
 
 

@@ -6,7 +6,7 @@
 """
 from ..common import explained
 from .coil import frequency, supplies
-from .result import AUDIO_BAND, ConverterResult, checked, choose, design, source_params, sweep
+from .result import AUDIO_BAND, ConverterResult, checked, choose, design, designed_at, source_params, sweep
 
 TABLE = "converter"
 #: the tolerances the converter's corners take, each zeroed in turn by :func:`sensitivity`
@@ -34,7 +34,7 @@ def enumerate(spec: dict | None = None) -> dict | None:
     InputError
         When ``spec`` is invalid.
     """
-    _, _, coil = choose(checked(spec))
+    _, _, coil = choose(designed_at(checked(spec)))
     return None if coil is None else {"core_shape": coil.shape, "core_material": coil.material, "turns": coil.turns,
                                       "wire": coil.wire}
 

@@ -435,8 +435,13 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
     if rise > s["temperature_rise_max"]:
         fails.append(f"it rises {rise:.3g} K, above {s['temperature_rise_max']:g} K")
         limits.append("temperature rise")
+    density = op["i_rms"] / (math.pi * wire["d_cu"] ** 2 / 4)
+    if density > s["current_density_max"] * (1 + 1e-9):
+        fails.append(f"its thickest fitting wire ({wire['name']}) carries {density / 1e6:.3g} A/mm^2, above "
+                     f"{s['current_density_max'] / 1e6:.3g} A/mm^2")
+        limits.append("current density")
     return Coil(**base, b_sat=sat, saturation_margin=margin, wire=wire["name"], wire_diameter=wire["d_cu"],
-                current_density=op["i_rms"] / (math.pi * wire["d_cu"] ** 2 / 4), r_dc=r_dc, core_loss=p_core,
+                current_density=density, r_dc=r_dc, core_loss=p_core,
                 winding_loss=p_cu, temperature_rise=rise, fails="; ".join(fails), limits=tuple(limits))
 
 

@@ -47,6 +47,7 @@ from dataclasses import dataclass
 
 from ...core import InputError
 from ...core import series as eseries
+from ...core.units import eng
 from ...sources.tca5600 import circuit as tca5600
 from ...sources.tca5600 import data as tca5600_data
 from ..common import Result, Table, checked_table, completed, is_checked, ordered, reported
@@ -94,6 +95,7 @@ I_OUT_FLOOR = 1e-6
 
 @dataclass(frozen=True)
 class ConverterResult(Result):
+    f_min_design: float = reported('Hz', 'f_min designed at (raised above the spec\'s by audible = avoid)')
     alpha: float = reported('1', 'time ratio alpha = t1/t2 (eq 3)')
     t1: float = reported('s', 'charging time t1 (eq 4)')
     t2: float = reported('s', 'dumping time t2')
@@ -470,13 +472,19 @@ def design(spec: dict | None = None) -> ConverterResult:
     Infeasible
         When no candidate core meets it (:func:`infeasible`).
     """
-    s = checked(spec)
+    given = checked(spec)
+    s = designed_at(given)
     op, every, chosen = choose(s)
     if chosen is None:
         raise infeasible(s, every)
+    notes = () if s["f_min"] == given["f_min"] else (
+        f"audible = avoid: f_min raised from {eng(given['f_min'], 'Hz')} to {eng(s['f_min'], 'Hz')} so that the full-load "
+        f"frequency stays at or above {eng(AUDIO_BAND, 'Hz')} at every corner up to v_supply_max = "
+        f"{eng(s['v_supply_max'], 'V')} (audible = warn keeps the f_min given)",)
     smaller = [c for c in every if c.ve < chosen.ve * (1 - 1e-9)]
     return ConverterResult(
-        spec=s, alpha=op["alpha"], t1=op["t1"], t2=op["t2"], i_peak=op["i_peak"], l1=op["l1"], r1=op["r1"],
+        spec=given, f_min_design=s["f_min"], alpha=op["alpha"], t1=op["t1"], t2=op["t2"], i_peak=op["i_peak"],
+        l1=op["l1"], r1=op["r1"],
         r1_part=op["r1_part"], i_peak_min=op["i_peak_min"], i_peak_max=op["i_peak_max"], l1_nominal=op["l1_nominal"],
         l1_max=op["l1_max"], f_sw_min=op["f_sw_min"], f_sw_max=op["f_sw_max"],
         vl_plus=op["vl_plus"], vl_minus=op["vl_minus"], i_rms=op["i_rms"],
@@ -485,7 +493,74 @@ def design(spec: dict | None = None) -> ConverterResult:
         winding_loss=chosen.winding_loss,
         temperature_rise=chosen.temperature_rise, saturation_margin=chosen.saturation_margin,
         binding=binding(every, chosen), coil=chosen, candidates=tuple(every),
-        next_smaller=smaller[-1] if smaller else None, warnings=tuple(warnings(s, op, chosen)))
+        next_smaller=smaller[-1] if smaller else None, warnings=notes + tuple(warnings(s, op, chosen)))
+
+
+def designed_at(s: Table) -> Table:
+    """The checked table the design runs at: ``s`` itself, or with ``audible`` = "avoid" and a full-load
+    frequency that would fall into the audio band, ``s`` with f_min raised to :func:`inaudible_f_min`.
+
+    Parameters
+    ----------
+    s : Table
+        The checked ``[converter]`` table.
+
+    Returns
+    -------
+    Table
+        The checked table to design at.
+
+    Raises
+    ------
+    Infeasible
+        From :func:`inaudible_f_min`, when no f_min keeps every corner out of the audio band.
+    """
+    if s["audible"] != "avoid":
+        return s
+    f_needed = inaudible_f_min(s)
+    return s if f_needed <= s["f_min"] else checked_table(TABLE, {**dict(s), "f_min": f_needed})
+
+
+def inaudible_f_min(s: dict) -> float:
+    """The lowest f_min at which the full-load frequency stays at or above :data:`AUDIO_BAND` at every corner
+    over the supply range: every frequency scales with f_min (L1 is inversely proportional to it, the peak
+    currents do not depend on it), so f_min x AUDIO_BAND / f_sw_min, re-checked through the operating point
+    (R1's series rounding) and nudged up until it holds.
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[converter]`` table (SI units).
+
+    Returns
+    -------
+    float
+        The f_min to design at, Hz: the spec's own when it already stays out of the audio band.
+
+    Raises
+    ------
+    Infeasible
+        When ``v_supply_max`` reaches :func:`~.coil.v_top` (the frequency falls to zero there, whatever f_min),
+        or the f_min needed is above the schema's highest.
+    """
+    from ..schema import TABLES
+
+    if s["v_supply_max"] >= v_top(s):
+        raise Infeasible(TABLE, f"audible = avoid: at VCC2 = {eng(v_top(s), 'V')} V_L+ vanishes and the full-load "
+                         f"frequency falls to zero whatever f_min; keep v_supply_max below it (or audible = warn)",
+                         {"v_supply_max": v_top(s)})
+    f_high = next(p.high for p in TABLES[TABLE] if p.name == "f_min")
+    f = s["f_min"]
+    for _ in range(20):
+        low = operating_point({**dict(s), "f_min": f})["f_sw_min"]
+        if low >= AUDIO_BAND * (1 - 1e-9):
+            return f
+        f = f * AUDIO_BAND / low * (1 + 1e-6)
+        if f > f_high:
+            break
+    raise Infeasible(TABLE, f"audible = avoid: the full-load frequency stays above {eng(AUDIO_BAND, 'Hz')} up to "
+                     f"v_supply_max = {eng(s['v_supply_max'], 'V')} only with f_min above {eng(f, 'Hz')}, more than the "
+                     f"{eng(f_high, 'Hz')} allowed: lower v_supply_max or use audible = warn", {"f_min": f})
 
 
 def sweep(s: dict, frequencies) -> list[dict]:
