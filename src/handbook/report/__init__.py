@@ -10,6 +10,7 @@ from importlib import import_module
 _HOME = {"axes": "figures", "format_axis": "figures", "glue_all": "notebook", "is_note": "notebook",
          "note_only": "notebook", "sentence": "notebook", "setup": "notebook",
          "show_equation": "notebook", "BADGE": "tables", "ERRATA_KINDS": "tables", "design_table": "tables",
+         "bom_table": "tables", "readable": "tables",
          "eng": "tables", "errata_counts": "errata", "errata_md": "errata", "reading_notes_md": "errata",
          "review_table": "errata", "examples_table": "tables",
          "table": "tables", "folded": "tables", "chapter_table": "spice_tables", "rows_table": "spice_tables",

@@ -74,6 +74,28 @@ def table(header: list[str], rows: list[list]) -> Markdown:
 
 
 
+def bom_table(rows: list[dict]) -> Markdown:
+    """Bill-of-materials rows (:func:`handbook.design.bom.rows`) as a person reads them: designator, quantity,
+    part, value, tolerance, the rating with the stress it carries, technology, package and tempco, the reason.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The rows (keys :data:`handbook.design.bom.COLUMNS`).
+
+    Returns
+    -------
+    Markdown
+        The table ("nothing designed" when there are no rows).
+    """
+    tol = lambda x: "" if x is None else f"±{x * 100:g} %"  # noqa: E731
+    return table(["designator", "qty", "part", "value", "tolerance", "rating (worst-case stress)",
+                  "technology; package; tempco", "reason"],
+                 [[r["designator"], r["quantity"], r["part"], r["value_text"], tol(r["tolerance"]), r["rating_text"],
+                   "; ".join(x for x in (r["technology"], r["package"], r["tempco"]) if x), r["reason"]]
+                  for r in rows] or [["", "", "nothing designed", "", "", "", "", ""]])
+
+
 def design_table(table_name: str, result) -> Markdown:
     """One design's results as a table (values with units), or what can be met when nothing can."""
     from ..design.solvers import Infeasible
