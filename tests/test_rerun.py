@@ -62,6 +62,8 @@ FIXED = {
                               ("5 %", "The note adds up the initial tolerance as", "the note's stack-up, named as such"),
                               ("8.2 V", "D1 at its lowest, 8.2 V", "the note's network at the design chapter's default "
                                "corner, whatever the parameter cell holds (said so in the chapter)")],
+    "design/class_d": [("20 V", "The distortion term has one calibration point", "the datasheet's calibration point "
+                        "(its system table's test conditions), named as such")],
     "design/current_limiter": [("1.8002 A", "A shortcut that fixes the corner of the highest trip voltage",
                                 "a counterexample to a shortcut, at the default spec, named as such")],
     "lm4651/equations": [("4 Ω", "SPICE puts the corner", "the simulation runs both loads, 4 and 8 ohm, always"),

@@ -35,6 +35,27 @@ def test_infeasible_margin_says_what_can_be_met():
         limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.25})
 
 
+def test_an_unmeetable_window_says_the_narrowest_that_can_be_met_and_what_to_tighten():
+    """The narrowest window is bisected on the relaxation; a series network meets it 3 % wider (the exact search,
+    checked again at every corner by the oracle) and nothing 3 % narrower; halving the named tolerance buys
+    margin, and it is the one that buys most."""
+    with pytest.raises(Infeasible) as exc:
+        limiter.design({"i_no_trip": 1.0, "i_must_trip": 1.25})
+    got = exc.value.achievable
+    k, key = got["i_must_trip_min"], got["tighten"]
+    assert 1.25 < k < 1.5 and f"1 .. {k:.4g} A" in str(exc.value) and f"halving {key} buys the most" in str(exc.value)
+    wide = limiter.design({"i_no_trip": 1.0, "i_must_trip": k * 1.03, "v_drop_max": 10.0})
+    lo, hi, _, _ = limiter_corners(wide.r7, wide.network, wide.spec)
+    assert lo >= 1.02 * (1 - 1e-9) and hi <= k * 1.03 * 0.98 * (1 + 1e-9)
+    with pytest.raises(Infeasible):
+        limiter.design({"i_no_trip": 1.0, "i_must_trip": k * 0.97, "v_drop_max": 10.0})
+    s = limiter.checked({"i_no_trip": 1.0, "i_must_trip": 1.25})
+    from handbook.design.limiter.explain import TOLERANCES, best_margin
+    base = best_margin(s)
+    gains = {t: best_margin({**s, t: s[t] / 2}) - base for t in TOLERANCES if s[t] > 0}
+    assert gains[key] == max(gains.values()) > 0
+
+
 def test_warnings_name_the_ic_limit_and_the_sense_resistor_power():
     r = limiter.design({"ic": "TDA5143"})
     assert any("TDA5143" in w and "0.7 A" in w for w in r.warnings)

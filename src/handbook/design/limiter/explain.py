@@ -42,6 +42,60 @@ def best_margin(s: dict) -> float | None:
     return None if res is None else float(res[0][6])
 
 
+#: the tolerances a reader can tighten, each halved in turn to see which buys the most margin
+TOLERANCES = ("resistor_tolerance", "zener_tolerance", "zener_tc", "offset", "input_bias", "input_offset_current")
+
+
+def window_reach(s: dict) -> tuple[str, dict]:
+    """The narrowest window the tolerances allow and the tolerance whose halving buys the most margin (the
+    relaxation's figures: IPOPT over continuous networks, so an upper bound on what a series network reaches).
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table whose window cannot be met.
+
+    Returns
+    -------
+    tuple
+        (a clause for the message, "" when IPOPT finds nothing; {"i_must_trip_min": the smallest i_must_trip,
+        A, that reaches ``min_margin`` with ``i_no_trip`` as it is, or None past ten times the window;
+        "tighten": the tolerance key whose halving gains most, or None; "tighten_gain": that gain, a fraction})
+    """
+    def ok(k: float) -> bool:
+        m = best_margin({**s, "i_must_trip": s["i_no_trip"] * k})
+        return m is not None and m >= s["min_margin"]
+
+    lo = s["i_must_trip"] / s["i_no_trip"]
+    hi = lo
+    while not ok(hi):
+        hi *= 1.5
+        if hi > 10 * lo:
+            hi = None
+            break
+    out, text = {"i_must_trip_min": None, "tighten": None, "tighten_gain": None}, ""
+    if hi is not None:
+        for _ in range(20):
+            mid = (lo + hi) / 2
+            lo, hi = (lo, mid) if ok(mid) else (mid, hi)
+        out["i_must_trip_min"] = s["i_no_trip"] * hi
+        text += (f"; with these tolerances the narrowest window IPOPT's continuous network meets is "
+                 f"{s['i_no_trip']:g} .. {s['i_no_trip'] * hi:.4g} A (i_must_trip / i_no_trip = {hi:.4g}; series values "
+                 "need about that or a little more)")
+    base = best_margin(s)
+    gains = {}
+    for key in TOLERANCES:
+        if s[key] > 0:
+            m = best_margin({**s, key: s[key] / 2})
+            if m is not None and base is not None:
+                gains[key] = m - base
+    if gains:
+        key = max(gains, key=gains.get)
+        out.update(tighten=key, tighten_gain=gains[key])
+        text += f"; halving {key} buys the most ({gains[key]:+.2%} of worst margin)"
+    return text, out
+
+
 def least_divider_current(s: dict) -> float:
     """The least current any network of the ranges (or pins) draws from the zener node (largest values).
 
@@ -80,13 +134,14 @@ def _reason(s: dict) -> tuple[str, dict]:
     if margin is None or margin < s["min_margin"]:
         start = (f"no network keeps every corner's trip current inside {s['i_no_trip']:g} .. {s['i_must_trip']:g} A "
                  f"with a {s['min_margin']:.1%} margin: ")
+        reach = window_reach(s)
         if margin is None or margin < 0:
             return (start + "none keeps it inside the window at all at every corner; widen the window (now "
                     f"i_must_trip / i_no_trip = {s['i_must_trip'] / s['i_no_trip']:.3g}), use tighter tolerances or "
-                    "free a pinned resistor", {"min_margin_max": margin})
+                    f"free a pinned resistor{reach[0]}", {"min_margin_max": margin, **reach[1]})
         return (start + f"the best worst margin any network reaches is {margin:.2%}; lower min_margin to that, widen "
                 f"the window (now i_must_trip / i_no_trip = {s['i_must_trip'] / s['i_no_trip']:.3g}) or use tighter "
-                "tolerances", {"min_margin_max": margin})
+                f"tolerances{reach[0]}", {"min_margin_max": margin, **reach[1]})
     r7_relaxed = smallest_r7(s)
     hint = f" (IPOPT's continuous network needs R7 >= {r7_relaxed:.3g} ohm)" if r7_relaxed else ""
     return (f"no {s['r7_series']} R7 within {s['r7_min']:g} .. {s['r7_max']:g} ohm has a series network meeting "
