@@ -397,6 +397,27 @@ def library_design(chapter: str, params: dict):
     return specmod.run_each({table: {k: v for k, v in chapter_inputs(chapter, params).items() if k in keys}})[table]
 
 
+def library_status_table(chapter: str, params: dict) -> str | None:
+    """A source chapter's status table as the library computes it for the chapter's inputs: the source module's
+    ``evaluate`` on its ``params`` of the parameters cell's values with ``params`` over them (the chapter named
+    in the chapter's own call), as :func:`handbook.report.examples_table` writes it; None for a chapter without
+    one."""
+    from handbook import report
+
+    doc = chapter.split("/")[0]
+    nb = json.loads((BOOK / f"{chapter}.ipynb").read_text())
+    call = next((m for c in nb["cells"] if c["cell_type"] == "code"
+                 for m in re.findall(r"examples_table\(note\.evaluate\(p(?:, chapter='(\w+)')?\)\)", "".join(c["source"]))),
+                None)
+    if call is None:
+        return None
+    module = import_module(f"handbook.sources.{doc}")
+    names = set(registry(chapter))
+    p = module.params(**{k: v for k, v in chapter_inputs(chapter, params).items() if k in names})
+    rows = module.evaluate(p, chapter=call) if call else module.evaluate(p)
+    return report.examples_table(rows).data
+
+
 def generated(chapter: str, k: int) -> dict:
     """The k-th generated parameter set of a chapter (only the values that differ from its parameters cell); for a
     design chapter the first draw the library can design (an unmeetable draw is :func:`drawn`'s to test)."""
@@ -452,6 +473,9 @@ def test_generated_parameter_sets_keep_to_the_readers_values(chapter, k, tmp_pat
     other_nb = json.loads(out.read_text())
     found = problems(chapter, note_nb, other_nb, params)
     assert not found, f"{chapter} with {params}: the re-run states the note's results as the reader's:\n" + "\n".join(found)
+    table = None if chapter in DESIGN_TABLES else library_status_table(chapter, params)
+    if table is not None:  # the status table shown is the library's for the same inputs
+        assert table in outputs_markdown(other_nb), f"{chapter} with {params}: its status table is not the library's"
     if chapter in LIBRARY:  # what the chapter shows is the library's design for the same inputs
         r, shown = library_design(chapter, params), glued(other_nb)
         for name, of in LIBRARY[chapter].items():

@@ -98,7 +98,8 @@ def test_every_design_holds_at_every_corner(i_no, ratio, off, vz, rt, tc, pins, 
         r = limiter.design(spec, board=False)
     except Infeasible as exc:  # says what can be met: a figure of the spec's own table
         assert exc.table == "current_limiter" and exc.achievable, exc
-        assert set(exc.achievable) <= {"divider_current_min", "headroom_max", "min_margin_max", "r7_relaxed", "pinned"}
+        assert set(exc.achievable) <= {"divider_current_min", "headroom_max", "min_margin_max", "r7_relaxed", "pinned",
+                                       "i_must_trip_min", "tighten", "tighten_gain"}
         return
     lo, hi, head, i_div = limiter_corners(r.r7, r.network, r.spec)
     assert (r.i_trip_min, r.i_trip_max, r.headroom_min, r.divider_current) == pytest.approx((lo, hi, head, i_div), rel=1e-9)

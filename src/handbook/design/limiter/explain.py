@@ -46,49 +46,46 @@ def best_margin(s: dict) -> float | None:
 TOLERANCES = ("resistor_tolerance", "zener_tolerance", "zener_tc", "offset", "input_bias", "input_offset_current")
 
 
-def window_reach(s: dict) -> tuple[str, dict]:
+def window_reach(s: dict, margin: float | None = None) -> tuple[str, dict]:
     """The narrowest window the tolerances allow and the tolerance whose halving buys the most margin (the
-    relaxation's figures: IPOPT over continuous networks, so an upper bound on what a series network reaches).
+    relaxation's figures: IPOPT over continuous networks, a local optimum, so about what a series network
+    reaches).
+
+    R7 scales every corner's trip current alike, so at the best network both margins are equal: with the best
+    worst margin m0 at the window ratio k0 = i_must_trip / i_no_trip, the network's corner spread I_max / I_min
+    is k0 (1 - m0) / (1 + m0), which does not depend on the window; the narrowest ratio that keeps
+    ``min_margin`` = m is then that spread times (1 + m) / (1 - m), in closed form.
 
     Parameters
     ----------
     s : Mapping
         The checked ``[current_limiter]`` table whose window cannot be met.
+    margin : float or None
+        The best worst margin at ``s``'s window (:func:`best_margin`), if already known.
 
     Returns
     -------
     tuple
         (a clause for the message, "" when IPOPT finds nothing; {"i_must_trip_min": the smallest i_must_trip,
-        A, that reaches ``min_margin`` with ``i_no_trip`` as it is, or None past ten times the window;
-        "tighten": the tolerance key whose halving gains most, or None; "tighten_gain": that gain, a fraction})
+        A, with ``i_no_trip`` as it is, or None; "tighten": the tolerance key whose halving gains most, or None;
+        "tighten_gain": that gain, a fraction, or None})
     """
-    def ok(k: float) -> bool:
-        m = best_margin({**s, "i_must_trip": s["i_no_trip"] * k})
-        return m is not None and m >= s["min_margin"]
-
-    lo = s["i_must_trip"] / s["i_no_trip"]
-    hi = lo
-    while not ok(hi):
-        hi *= 1.5
-        if hi > 10 * lo:
-            hi = None
-            break
+    base = best_margin(s) if margin is None else margin
     out, text = {"i_must_trip_min": None, "tighten": None, "tighten_gain": None}, ""
-    if hi is not None:
-        for _ in range(20):
-            mid = (lo + hi) / 2
-            lo, hi = (lo, mid) if ok(mid) else (mid, hi)
-        out["i_must_trip_min"] = s["i_no_trip"] * hi
-        text += (f"; with these tolerances the narrowest window IPOPT's continuous network meets is "
-                 f"{s['i_no_trip']:g} .. {s['i_no_trip'] * hi:.4g} A (i_must_trip / i_no_trip = {hi:.4g}; series values "
-                 "need about that or a little more)")
-    base = best_margin(s)
+    if base is None:
+        return text, out
+    k0, m = s["i_must_trip"] / s["i_no_trip"], s["min_margin"]
+    k = k0 * (1 - base) / (1 + base) * (1 + m) / (1 - m)
+    out["i_must_trip_min"] = s["i_no_trip"] * k
+    text += (f"; with these tolerances the narrowest window IPOPT's continuous network meets is {s['i_no_trip']:g} .. "
+             f"{s['i_no_trip'] * k:.4g} A (i_must_trip / i_no_trip = {k:.4g}; series values need about that or a "
+             "little more)")
     gains = {}
     for key in TOLERANCES:
         if s[key] > 0:
-            m = best_margin({**s, key: s[key] / 2})
-            if m is not None and base is not None:
-                gains[key] = m - base
+            tight = best_margin({**s, key: s[key] / 2})
+            if tight is not None:
+                gains[key] = tight - base
     if gains:
         key = max(gains, key=gains.get)
         out.update(tighten=key, tighten_gain=gains[key])
@@ -134,7 +131,7 @@ def _reason(s: dict) -> tuple[str, dict]:
     if margin is None or margin < s["min_margin"]:
         start = (f"no network keeps every corner's trip current inside {s['i_no_trip']:g} .. {s['i_must_trip']:g} A "
                  f"with a {s['min_margin']:.1%} margin: ")
-        reach = window_reach(s)
+        reach = window_reach(s, margin)
         if margin is None or margin < 0:
             return (start + "none keeps it inside the window at all at every corner; widen the window (now "
                     f"i_must_trip / i_no_trip = {s['i_must_trip'] / s['i_no_trip']:.3g}), use tighter tolerances or "
