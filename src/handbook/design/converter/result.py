@@ -32,10 +32,11 @@ least :data:`GAP_MIN`; the thickest wire that fits the bobbin with ``fill_factor
 core loss by the improved generalised Steinmetz equation (iGSE) for the triangular flux of figure 14 at
 the largest flux swing, the largest over the supply range at full load; the copper loss I_rms^2 R_dc at
 ``t_ambient`` + ``temperature_rise_max``; and the temperature rise from the core's thermal resistance. The
-choice is the candidate of least effective volume that meets the saturation margin, the fit, the gap and
-``temperature_rise_max`` (ties: the least loss); ``binding`` names the limit that rules out the next smaller
-core. The current density is advisory (a warning above ``current_density_max``): the temperature rise,
-which counts the copper loss, decides. The candidate set is finite and every candidate is evaluated exactly,
+choice is the candidate of least effective volume that meets the saturation margin, the fit, the gap,
+``temperature_rise_max`` and ``current_density_max`` in its thickest fitting wire (ties: the least loss);
+``binding`` names the limit that rules out the next smaller core. With ``audible`` = "avoid" f_min is first
+raised until the full-load frequency stays above the audio band at every corner (:func:`inaudible_f_min`).
+The candidate set is finite and every candidate is evaluated exactly,
 so enumeration is the exact optimum: no solver is needed and none is used. The frequency trade-off (higher
 f_min: a smaller L1 and core, more core loss per volume) is shown as a sweep over f_min in the design chapter.
 """
@@ -394,8 +395,8 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
     -------
     list of str
         The warnings, possibly none: V_L+ vanishing below ``v_supply_max``; a full-load frequency in the audio
-        band; core loss extrapolated outside the Steinmetz fit; wire thicker than twice the skin depth; current
-        density above ``current_density_max``; a peak current above the assumed switch limit
+        band; core loss extrapolated outside the Steinmetz fit; wire thicker than twice the skin depth; a peak
+        current above the assumed switch limit
         (:data:`SWITCH_I_MAX`); more than :data:`TURNS_WARN` turns or a self-resonance below ten times the
         highest switching frequency.
     """
@@ -426,10 +427,6 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
     if c.wire_diameter is not None and c.wire_diameter > 2 * skin:
         out.append(f"wire {eng(c.wire_diameter, 'm')} is thicker than twice the skin depth at "
                    f"{eng(op['f_sw_max'], 'Hz')} ({eng(skin, 'm')}): the copper loss (I_rms^2 R_dc) is underestimated")
-    if c.current_density is not None and c.current_density > s["current_density_max"]:
-        out.append(f"the wire carries {c.current_density / 1e6:.3g} A/mm^2 rms, above the advisory "
-                   f"{s['current_density_max'] / 1e6:.3g} A/mm^2 (the temperature rise, {c.temperature_rise:.3g} K, "
-                   "counts its loss)")
     if op["i_peak_max"] > SWITCH_I_MAX:
         out.append(f"the peak current reaches {eng(op['i_peak_max'], 'A')}, above the "
                    f"{eng(SWITCH_I_MAX, 'A')} assumed for the TCA5600's internal switch (the excerpt's R1 = "
