@@ -66,7 +66,7 @@ def test_bom_written_on_success_and_never_on_failure(tmp_path):
     bom = tmp_path / "bom.csv"
     out = _run(tmp_path, "[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n", "--bom", str(bom))
     assert out.returncode == 0, out.stderr
-    rows = {r["designator"]: r for r in csv.DictReader(bom.open(encoding="utf-8"))}
+    rows = {r["designator"]: r for r in csv.DictReader(bom.open(encoding="utf-8-sig"))}
     c3 = rows["A1-C3"]  # 11 uA x 10/3000 s / 1.4 V / 0.95 = 27.6 nF -> E12 33 nF
     assert float(c3["value"]) == pytest.approx(33e-9) and c3["value_text"] == "33 nF"
     assert c3["reason"].startswith("E12 value") and "window" in c3["reason"] and c3["technology"].startswith("C0G")

@@ -92,7 +92,6 @@ def commutation_rows(c, ic: str = "TDA5144") -> list[dict]:
         The rows (keys :data:`COLUMNS`); C5 and C6 only when designed (motor data, flyback time given).
     """
     sheet, s = SHEETS["commutation"][0], c.spec
-    v_rating = ratings.capacitor_voltage(TDA5144_VP_MAX)
     rows = [_row(sheet, "IC1", f"{ic} BLDC motor driver", ic, "", reason="the motor IC the timers belong to")]
     caps = [("C3", "CAP-CD", c.cap_cd, f"commutation delay: smallest value whose swing at {s['rpm_min']:g} rpm fits "
              f"the switching window at every corner ({c.rpm_min_reliable:.0f} to {c.rpm_max_reliable:.0f} rpm)"),
@@ -103,6 +102,7 @@ def commutation_rows(c, ic: str = "TDA5144") -> list[dict]:
         caps.append(("C6", "CAP-TI", c.cap_ti, "watchdog: outlasts the longest flyback pulse"))
     for ref, name, value, why in caps:
         tech, package, tempco = _cap_class(value)
+        v_rating = ratings.capacitor_voltage(TDA5144_VP_MAX, film="film" in tech)
         rows.append(_row(sheet, ref, f"{name} timing capacitor", value, "F", s["tolerance"], voltage=v_rating,
                          stress=TDA5144_VP_MAX, technology=tech, package=package, tempco=tempco,
                          rating_text=f"{v_rating:g} V: any pin may reach V_P, at most {TDA5144_VP_MAX:g} V, 50 % "
@@ -147,20 +147,37 @@ def limiter_rows(lim) -> list[dict]:
                               current[n] ** 2 * value * (1 + t), t_a, "network of the largest worst margin with this R7"
                               + (" (pinned by the spec)" if s[f"r{n}"] is not None else ""),
                               technology="thin or metal film, one type for R9..R13",
-                              tempco="≤ 50 ppm/K, the same type (the trip depends on their ratios)"))
+                              tempco=_drift_budget(t, s["temp_span"])))
     if lim.r14 is not None:
         rows.append(_resistor(sheet, "R14", "zener feed resistor", lim.r14, s["resistor_tolerance"], s["r14_series"],
                               lim.p_r14, t_a, f"feeds D1 its {eng(s['zener_test_current'], 'A')} test current plus "
                               f"the dividers' at {s['v_supply_min']:g} V"))
         need = ratings.power_needed(lim.p_zener, t_a, ratings.ZENER["knee"], ratings.ZENER["zero"])
-        name = _zener_name(s["zener_voltage"])
+        small = need <= ratings.ZENER["rating"]  # else the 1.3 W class (DO-41), derated the same way
+        rating = ratings.ZENER["rating"] if small else ratings.ZENER_LARGE
+        tech = f"{_zener_name(s['zener_voltage'])}, DO-35 glass" if small else "1.3 W zener class, DO-41"
         rows.append(_row(sheet, "D1", "reference zener", s["zener_voltage"], "V", s["zener_tolerance"],
-                         power=ratings.ZENER["rating"], stress=lim.p_zener, technology=f"{name}, DO-35 glass",
-                         package="DO-35", tempco=f"up to {eng(s['zener_tc'], 'V')}/K",
-                         rating_text=f"500 mW series: {eng(lim.p_zener, 'W')} at {s['v_supply_max']:g} V needs "
+                         power=rating, stress=lim.p_zener, technology=tech, package="DO-35" if small else "DO-41",
+                         tempco=f"up to {eng(s['zener_tc'], 'V')}/K",
+                         rating_text=f"{eng(rating, 'W')}: {eng(lim.p_zener, 'W')} at {s['v_supply_max']:g} V needs "
                                      f"{eng(need, 'W')} at {t_a:g} °C (50 % derating)",
                          reason=f"bridges both dividers; {eng(vz_low, 'V')} to {eng(vz_high, 'V')} with drift"))
     return rows
+
+
+#: the divider resistors' temperature coefficient the BOM asks for, 1/K: thin film's usual class
+DIVIDER_TC = 25e-6
+
+
+def _drift_budget(tolerance: float, span: float) -> str:
+    """What R9..R13 must be bought as: the design's ``tolerance`` holds initial tolerance plus drift over the
+    temperature span, so the initial tolerance may be only what :data:`DIVIDER_TC` leaves of it."""
+    drift = DIVIDER_TC * span
+    if drift >= tolerance:
+        return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K drifts {drift:.2%} over ±{span:g} K, more than the design's ±{tolerance:.2%}: "
+                "a tracking network, or a larger resistor_tolerance")
+    return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K and initial ±{tolerance - drift:.2%} or better: the design's ±{tolerance:.2%} "
+            f"holds both over ±{span:g} K")
 
 
 def _zener_name(v: float) -> str:
@@ -193,23 +210,24 @@ def class_d_rows(cd) -> list[dict]:
     i_sat = ratings.SATURATION_MARGIN * i_peak
     i_rms = (cd.p_thermal / s["r_load"]) ** 0.5
     v_c = 2 * s["supply"]
-    v_rating = ratings.capacitor_voltage(v_c)
+    v_rating = ratings.capacitor_voltage(v_c, film=True)
     pin = PIN_VOLTAGE ** 2  # R_OSC and R_DLY each carry at most PIN_VOLTAGE
     return [
-        _row(sheet, "U1", "LM4651 class-D PWM driver", "LM4651", "", reason="drives the LM4652"),
+        _row(sheet, "U1", "LM4651 class-D PWM driver", "LM4651", "", reason="drives the LM4652" + (
+            "; pin 17 (DELAY) to ground: its own 27 ns meets dead_time_min, no R_DLY" if cd.r_dly == 0 else "")),
         _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "",
              reason="the output stage; its heat sink is HS1"),
         _resistor(sheet, "R1", "R_OSC, oscillator", cd.r_osc, 0.01, s["r_osc_series"], pin / cd.r_osc, t_a,
                   f"sets {eng(cd.f_sw, 'Hz')} by eq 5 ({eng(cd.f_sw_min, 'Hz')} to {eng(cd.f_sw_max, 'Hz')} at the "
                   "oscillator's tolerance)"),
-        _resistor(sheet, "R2", "R_DLY, dead time", cd.r_dly, 0.01, s["r_dly_series"], pin / max(cd.r_dly, 1.0), t_a,
-                  f"dead time at least {s['dead_time_min'] * 1e9:.0f} ns"),
+        *([_resistor(sheet, "R2", "R_DLY, dead time", cd.r_dly, 0.01, s["r_dly_series"], pin / cd.r_dly, t_a,
+                     f"dead time at least {s['dead_time_min'] * 1e9:.0f} ns")] if cd.r_dly > 0 else []),
         _row(sheet, "L1 L2", "output filter inductor, one per bridge output", cd.l_out, "H", s["l_tolerance"],
              current=i_sat, stress=i_peak, technology="powder or gapped ferrite core, low-loss at the switching "
              "frequency", package="power inductor",
              rating_text=f"saturation ≥ {eng(i_sat, 'A')} (1.2 × the worst peak {eng(i_peak, 'A')}, audio plus "
-                         f"ripple at clipping); rms ≥ {eng(i_rms, 'A')} at the thermal basis; "
-                         f"DCR ≤ {eng(s['l_dcr'] * cd.l_out, 'Ω')}",
+                         f"ripple at clipping; a shorted output reaches the LM4651's 10 A limit first); rms ≥ "
+                         f"{eng(i_rms, 'A')} at the thermal basis; DCR ≤ {eng(s['l_dcr'] * cd.l_out, 'Ω')}",
              reason=f"{s['l_series']} value; the filter's corner {eng(cd.f_corner, 'Hz')}"),
         _row(sheet, "C1", "C_BYP, output filter capacitor", cd.c_out, "F", s["c_tolerance"], voltage=v_rating,
              stress=v_c, technology="polyester or polypropylene film (the datasheet's Mylar)",
@@ -305,7 +323,7 @@ def write(table: list[dict], path: str | Path) -> None:
     path = Path(path)
     fd, tmp = tempfile.mkstemp(prefix=".bom-", suffix=".csv", dir=path.parent if str(path.parent) else ".")
     try:
-        with os.fdopen(fd, "w", newline="", encoding="utf-8") as fh:
+        with os.fdopen(fd, "w", newline="", encoding="utf-8-sig") as fh:  # the BOM mark: spreadsheets read Ω, ±
             w = csv.DictWriter(fh, fieldnames=list(COLUMNS))
             w.writeheader()
             w.writerows({k: ("" if r[k] is None else r[k]) for k in COLUMNS} for r in table)

@@ -29,10 +29,14 @@ RESISTOR_CLASSES = ((0.1, "0603 chip"), (0.125, "0805 chip"), (0.25, "1206 chip"
                     (5.0, "5 W wirewound"), (10.0, "10 W wirewound"), (25.0, "25 W chassis-mount wirewound"))
 #: capacitor rated voltages, V (the usual ladder of ceramic and film parts)
 CAPACITOR_VOLTAGES = (16.0, 25.0, 50.0, 63.0, 100.0, 250.0, 400.0, 630.0)
+#: the lowest rated voltage film capacitors are commonly sold at, V
+FILM_MIN_VOLTAGE = 63.0
 #: the BZX79's power rating, W, and where its derating ends (C): "500 mW" is the series' name; a DO-35 glass
 #: diode's rating falls from 50 C to zero at its 200 C junction limit (an assumption: the series' curve, not a
 #: figure the notes print)
 ZENER = {"rating": 0.5, "knee": 50.0, "zero": 200.0}
+#: the next zener power class, W (1.3 W axial DO-41 parts), taken with the same derating curve
+ZENER_LARGE = 1.3
 
 
 def available(t_ambient: float, knee: float = KNEE, zero: float = ZERO) -> float:
@@ -97,18 +101,20 @@ def resistor(p_worst: float, t_ambient: float) -> tuple[float, str]:
     return need, "no standard class: split it or use a heat-sunk part"
 
 
-def capacitor_voltage(v_worst: float) -> float:
+def capacitor_voltage(v_worst: float, film: bool = False) -> float:
     """The smallest rated voltage of the ladder with ``v_worst`` at most :data:`DERATING` of it.
 
     Parameters
     ----------
     v_worst : float
         The largest voltage across the capacitor, V.
+    film : bool
+        A film capacitor: its ladder starts at :data:`FILM_MIN_VOLTAGE` (film parts are rarely sold lower).
 
     Returns
     -------
     float
         The rated voltage, V (the voltage needed itself above the ladder's top).
     """
-    need = v_worst / DERATING
+    need = max(v_worst / DERATING, FILM_MIN_VOLTAGE if film else 0.0)
     return next((v for v in CAPACITOR_VOLTAGES if v >= need * (1 - 1e-12)), need)

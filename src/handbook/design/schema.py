@@ -83,9 +83,10 @@ def _limiter() -> tuple[Param, ...]:
                       "D1's dissipation",
               cite="12 V +10 %, as AN93008's -10 %"),
         Param(name="v_drop_max", default=1.0, unit="V", high=10.0, **_POS,
-              meaning="largest drop across R7 in the motor path, at the highest trip current and R7's high end",
-              cite="AN94002 2.3: the speed control wants at least 1 V across R7 and T1 together for linear "
-                   "control; R7 alone may take no more"),
+              meaning="largest drop across R7 in the motor path, at the highest trip current",
+              cite="assumption: about a tenth of the lowest 12 V - 10 % supply lost in the sense resistor; AN94002 "
+                   "2.3's 1 V is the least drop it asks across R7 and T1 together for linear speed control, so "
+                   "every volt R7 takes comes out of the motor's"),
         Param(name="zener_test_current", default=5e-3, unit="A", high=0.1, **_POS,
               meaning="current at which D1's tolerance is specified: R14 feeds at least this plus the dividers' "
                       "current at the lowest supply",

@@ -230,8 +230,9 @@ def traced(spec: Spec) -> dict:
     -------
     dict
         ``version`` (str), ``spec_sha256`` (hex of the canonical JSON of ``spec``), ``spec`` ({table: {key:
-        value}}, after defaults) and ``units`` ({table: {output key: unit}}; "1" a plain number, "%" a fraction,
-        "" text, "C" degrees Celsius).
+        value}}, after defaults), ``asked`` (the tables the spec wrote; all four when it wrote none; the others
+        are the notes' defaults) and ``units`` ({table: {output key: unit}}; "1" a plain number, "fraction" a
+        fraction, "" text, "degC" degrees Celsius).
     """
     import hashlib
     import json
@@ -240,8 +241,10 @@ def traced(spec: Spec) -> dict:
 
     read = {t: dict(spec.tables[t]) for t in spec.tables}
     canonical = json.dumps(read, sort_keys=True, default=str, separators=(",", ":"))
+    unit = {"%": "fraction", "C": "degC"}  # a fraction stored, a percentage only when shown
     return {"version": VERSION, "spec_sha256": hashlib.sha256(canonical.encode()).hexdigest(), "spec": read,
-            "units": {t: {o.key: o.unit for o in outs} for t, outs in OUTPUTS.items()}}
+            "asked": list(spec.asked), "units": {t: {o.key: unit.get(o.unit, o.unit) for o in outs}
+                                                 for t, outs in OUTPUTS.items()}}
 
 
 __all__ = ["DESIGNS", "OUTPUTS", "Spec", "InputError", "Infeasible", "check", "load", "parse", "run", "run_each",

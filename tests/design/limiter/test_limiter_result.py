@@ -79,11 +79,20 @@ def test_the_drop_in_the_motor_path_is_held_to_v_drop_max():
     """R7 is the smallest that meets the window, so no other network drops less: a window whose R7 drops more
     than v_drop_max cannot be met, and says the drop it needs."""
     r = limiter.design()
-    assert r.v_drop == pytest.approx(r.i_trip_max * r.r7 * 1.05, rel=1e-12) and r.v_drop <= 1.0
+    # the trip current is V_cs / R7, so the highest flows with R7 at its low end: the largest drop is that V_cs
+    assert r.v_drop == pytest.approx(r.i_trip_max * r.r7 * 0.95, rel=1e-12) and r.v_drop <= 1.0
     with pytest.raises(Infeasible) as exc:
         limiter.design({"i_no_trip": 0.8, "i_must_trip": 1.2, "min_margin": 0.0})
     need = exc.value.achievable["v_drop_min"]
     assert need > 1.0 and f"drops {need:.3g} V" in str(exc.value) and "v_drop_max = 1 V" in str(exc.value)
+    # the lever it names is the one that helps most: the exact design with it halved needs a smaller R7 than
+    # with any other tolerance halved (the divider errors reach the trip multiplied by V_D1 / V_cs)
+    key = exc.value.achievable["tighten"]
+    assert key == "resistor_tolerance" and f"halving {key}" in str(exc.value)
+    base = {"i_no_trip": 0.8, "i_must_trip": 1.2, "min_margin": 0.0, "v_drop_max": 10.0}
+    halved = {k: limiter.design({**base, k: limiter.checked({})[k] / 2}).r7
+              for k in ("resistor_tolerance", "r7_tolerance", "zener_tolerance", "offset")}
+    assert halved[key] == min(halved.values()) < exc.value.achievable["r7"]
     allowed = limiter.design({"i_no_trip": 0.8, "i_must_trip": 1.2, "min_margin": 0.0, "v_drop_max": need * 1.001})
     assert allowed.r7 == exc.value.achievable["r7"] and allowed.v_drop == pytest.approx(need)
 

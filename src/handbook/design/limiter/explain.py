@@ -43,7 +43,8 @@ def best_margin(s: dict) -> float | None:
 
 
 #: the tolerances a reader can tighten, each halved in turn to see which buys the most margin
-TOLERANCES = ("resistor_tolerance", "zener_tolerance", "zener_tc", "offset", "input_bias", "input_offset_current")
+TOLERANCES = ("resistor_tolerance", "r7_tolerance", "zener_tolerance", "zener_tc", "offset", "input_bias",
+              "input_offset_current")
 
 
 def window_reach(s: dict, margin: float | None = None) -> tuple[str, dict]:
@@ -79,7 +80,7 @@ def window_reach(s: dict, margin: float | None = None) -> tuple[str, dict]:
     out["i_must_trip_min"] = s["i_no_trip"] * k
     text += (f"; with these tolerances the narrowest window IPOPT's continuous network meets is {s['i_no_trip']:g} .. "
              f"{s['i_no_trip'] * k:.4g} A (i_must_trip / i_no_trip = {k:.4g}; series values need about that or a "
-             "little more)")
+             "little more, and v_drop_max then bounds the R7 it takes)")
     gains = {}
     for key in TOLERANCES:
         if s[key] > 0:
@@ -91,6 +92,32 @@ def window_reach(s: dict, margin: float | None = None) -> tuple[str, dict]:
         out.update(tighten=key, tighten_gain=gains[key])
         text += f"; halving {key} buys the most ({gains[key]:+.2%} of worst margin)"
     return text, out
+
+
+def drop_levers(s: dict) -> tuple[str, dict]:
+    """For a window met only with too large a drop in R7: the tolerance whose halving lowers the smallest R7
+    most, and about what drop that leaves (IPOPT's smallest continuous R7, :func:`~.relaxation.smallest_r7`,
+    scaled by the exact design's drop).
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table.
+
+    Returns
+    -------
+    tuple
+        (a clause for the message, "" when IPOPT finds nothing; {"tighten": the tolerance key, or None,
+        "r7_relaxed_tight": IPOPT's smallest R7 with it halved, ohm, or None})
+    """
+    base = smallest_r7(s)
+    tight = {key: smallest_r7({**s, key: s[key] / 2}) for key in TOLERANCES if s[key] > 0}
+    tight = {k: v for k, v in tight.items() if v is not None}
+    if base is None or not tight:
+        return "", {"tighten": None, "r7_relaxed_tight": None}
+    key = min(tight, key=tight.get)
+    return (f"; halving {key} lowers the smallest R7 most, to about {tight[key] / base:.0%} of it (IPOPT's "
+            "continuous network)", {"tighten": key, "r7_relaxed_tight": tight[key]})
 
 
 def least_divider_current(s: dict) -> float:

@@ -26,7 +26,7 @@ from .. import ratings
 from ..common import Result, reported
 from ..solvers import Infeasible
 from . import model as net
-from .explain import explain
+from .explain import drop_levers, explain
 from .model import TABLE, checked
 from .search import GAP, solve
 
@@ -51,7 +51,7 @@ class LimiterResult(Result):
     p_r7: float = reported('W', 'loss in R7 at the highest trip current (stalled motor)')
     r7_rating: float = reported('W', "R7's power rating (the stall loss at 50 % of it at the highest ambient)")
     r7_package: str = reported('', "R7's package class")
-    v_drop: float = reported('V', 'drop across R7 at the highest trip current (R7 at its high end)')
+    v_drop: float = reported('V', 'largest drop across R7: the highest trip current, which flows with R7 at its low end')
     r14: float = reported('ohm', "R14, D1's feed")
     p_r14: float = reported('W', 'loss in R14 at the highest supply')
     i_zener_min: float = reported('A', 'current into D1 at the lowest supply (the dividers at their most)')
@@ -125,13 +125,14 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
         binding="the lowest trip current" if m_lo <= m_hi else "the highest trip current",
         evaluated=found["evaluated"], r7_tried=found["tried"], margin_bound=found["bound"],
         r7_proven=not found["unproven"], best_proven=found["proven"], unproven=found["unproven"])
-    result["v_drop"] = float(v["i_trip_max"]) * r7 * (1 + s["r7_tolerance"])
+    result["v_drop"] = float(v["i_trip_max"]) * r7 * (1 - s["r7_tolerance"])  # I = V_cs / R7: highest at R7's low end
     if board and result["v_drop"] > s["v_drop_max"]:  # R7 is the smallest that meets the window: no larger one drops less
+        text, levers = drop_levers(s)
         raise Infeasible(TABLE, f"the smallest R7 that keeps every corner inside {s['i_no_trip']:g} .. "
                          f"{s['i_must_trip']:g} A is {eng(r7, 'Ω', 3)}, which drops {result['v_drop']:.3g} V at the "
                          f"highest trip current, more than v_drop_max = {s['v_drop_max']:g} V: allow that drop, widen the "
-                         "window or tighten the tolerances (a narrower trip spread needs a smaller sense voltage)",
-                         {"v_drop_min": result["v_drop"], "r7": r7})
+                         "window or tighten the tolerances (the divider errors reach the trip multiplied by about "
+                         f"V_D1 / V_cs){text}", {"v_drop_min": result["v_drop"], "r7": r7, **levers})
     result["r7_rating"], result["r7_package"] = ratings.resistor(result["p_r7"], ambient(s))
     if board or net.zener_range(s)[1] < s["v_supply_min"] - 0.5:
         result.update(zener_feed(s, float(v["divider_current"])))
