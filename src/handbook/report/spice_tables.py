@@ -11,7 +11,7 @@ from ..core.units import eng
 from ..spice import checks
 from ..spice.circuit import evaluate
 from ..spice.runner import SpiceError, SpiceUnavailable
-from .tables import readable, table
+from .tables import folded, readable, table
 
 
 def chapter_table(*circuits, by_circuit: bool | None = None):
@@ -50,7 +50,8 @@ def rows_table(rows: list[dict], equation_head: str = "equation", lead: dict | N
     why = "\n".join(f"- {'; '.join(dict.fromkeys(names))}, {tol}"
                     + (" (a sanity check: it agrees by construction)" if sanity else "") + f": {reason}."
                     for (tol, sanity, reason), names in groups.items())
-    return Markdown(body.data + "\n\nWhy each tolerance:\n\n" + readable(why))
+    n = len(groups)
+    return Markdown(body.data + "\n\n" + folded(f"Why each tolerance ({n} reason{'s' * (n != 1)})", readable(why)).data)
 
 
 def _tolerance(rtol: float) -> str:

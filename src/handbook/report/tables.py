@@ -42,7 +42,12 @@ def examples_table(rows: list[dict], source: bool = False) -> Markdown:
             shown = f"{shown} (printed {'≥' if r['relation'] == '>=' else '≤'} this)"
         cells = [r["source"]] * source + [r["quantity"], printed, shown, BADGE[r["status"]], r["reason"]]
         lines.append("| " + " | ".join(_cell(readable(c)) for c in cells) + " |")
-    return Markdown("\n".join(lines))
+    counts: dict[str, int] = {}
+    for r in rows:
+        counts[r["status"]] = counts.get(r["status"], 0) + 1
+    summary = (f"Status of {len(rows)} printed number{'s' * (len(rows) != 1)}: "
+               + ", ".join(f"{n} {status}" for status, n in counts.items()))
+    return folded(summary, Markdown("\n".join(lines)))
 
 
 def _printed_and_recomputed(r: dict) -> str:
