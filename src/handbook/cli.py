@@ -190,11 +190,11 @@ def cmd_design(args) -> int:
     if args.json:
         print(json.dumps({**out, **specmod.traced(spec)}, indent=1, default=float))
     else:
-        _print_designs(out, failed)
+        _print_designs(out, failed, spec.asked)
     return 3 if failed else 0
 
 
-def _print_designs(out: dict, failed: dict) -> None:
+def _print_designs(out: dict, failed: dict, asked: tuple = ()) -> None:
     from .cli_text import width, wrap
     from .design.spec import OUTPUTS
     from .report.tables import shown_value
@@ -211,7 +211,7 @@ def _print_designs(out: dict, failed: dict) -> None:
             print(f"  {left.ljust(lw)}  {values[k] if k < len(values) else ''}".rstrip())
 
     for table in OUTPUTS:
-        print(f"[{table}]")
+        print(f"[{table}]" + ("" if not asked or table in asked else "  (not in your spec: the notes' defaults)"))
         if table in failed:
             for text in wrap(f"cannot be met: {failed[table]}", total - 2):
                 print(f"  {text}")

@@ -29,6 +29,16 @@ def test_design_cli_empty_spec_designs_the_notes_examples(tmp_path):
     assert all(isinstance(r[t]["warnings"], list) for t in ("commutation", "current_limiter", "class_d", "converter"))
 
 
+def test_text_output_names_the_tables_the_spec_did_not_ask_for(tmp_path):
+    out = _run(tmp_path, "[class_d]\np_out = 50.0\n")
+    assert out.returncode == 0, out.stderr
+    heads = [line for line in out.stdout.splitlines() if line.startswith("[")]
+    assert heads == ["[commutation]  (not in your spec: the notes' defaults)",
+                     "[current_limiter]  (not in your spec: the notes' defaults)", "[class_d]",
+                     "[converter]  (not in your spec: the notes' defaults)"]
+    assert all(h in _run(tmp_path, "").stdout.splitlines() for h in ("[commutation]", "[class_d]"))
+
+
 def test_design_cli_text_output_has_units(tmp_path):
     out = _run(tmp_path, "")
     assert out.returncode == 0, out.stderr
