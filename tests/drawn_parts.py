@@ -158,7 +158,7 @@ def assert_drawn_as_netlisted(circuit, aux: dict[str, str] = None, copies: dict[
     assert_same_parts(circuit, aux, copies)
 
 
-def assert_edit_caught(circuit, aux: dict[str, str], old: str, new: str, match: str) -> None:
+def assert_edit_caught(circuit, aux: dict[str, str], old: str, new: str, match: str, copies: dict | None = None) -> None:
     """The netlist with ``old`` replaced by ``new`` (a changed value, a stray element) fails
     :func:`assert_same_parts` with ``match``: the part-set test sees the edit."""
     import dataclasses
@@ -166,4 +166,4 @@ def assert_edit_caught(circuit, aux: dict[str, str], old: str, new: str, match: 
     edited = dataclasses.replace(circuit, netlist=circuit.netlist.replace(old, new))
     assert edited.netlist != circuit.netlist, f"{old!r} is not in the netlist: the edit would test nothing"
     with pytest.raises(AssertionError, match=match):
-        assert_same_parts(edited, aux)
+        assert_same_parts(edited, aux, copies)

@@ -17,6 +17,16 @@ BUILDERS = (limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limi
 
 
 
+def _opamp_copy() -> dict:
+    """The op-amp deck's offset copy: R13 2 % low, and the ramp to twice that copy's own trip."""
+    q = {**limiters.opamp_defaults(), "vos": 9e-3}
+    q["r13"] *= 1 - limiters.MISMATCH
+    return {"R13_1": q["r13"], "IM_1": 2 * limiters.trip_voltage(q) / q["r7"]}
+
+
+OPAMP_COPY = _opamp_copy()
+
+
 @functools.cache
 def simulated(builder):
     c = builder()
@@ -32,6 +42,8 @@ AUX = {r"VAM(_\d+)?": "the motor current's ammeter (0 V)", r"VC(_\d+)?": "T2's c
 def test_drawing_netlist_and_parts_are_one_set_with_one_set_of_values(builder):
     c = builder()
     copies = {"VS_1": c.part("VS").value * 0.9} if c.id == "limiter-supply" else {}  # its 12 V - 10 % copy
+    if c.id == "limiter-opamp":
+        copies = OPAMP_COPY
     assert_same_parts(c, AUX, copies)
 
 
@@ -40,8 +52,8 @@ def test_the_part_set_test_sees_a_part_missing_from_either_side():
     extra = dataclasses.replace(c, parts=c.parts + (Part("R99", 1e3, "ohm"),))
     with pytest.raises(AssertionError, match="a part not drawn"):
         assert_same_parts(extra, AUX)
-    assert_edit_caught(c, AUX, "R14 z 0 750", "R14 z 0 820", "R14")
-    assert_edit_caught(c, AUX, "VAM cs csm 0", "VAM cs csm 0\nR15 cs 0 1e6", "R15 is neither a part")
+    assert_edit_caught(c, AUX, "R14 z 0 750", "R14 z 0 820", "R14", OPAMP_COPY)
+    assert_edit_caught(c, AUX, "VAM cs csm 0", "VAM cs csm 0\nR15 cs 0 1e6", "R15 is neither a part", OPAMP_COPY)
 
 
 @pytest.mark.parametrize("builder", BUILDERS, ids=lambda b: b.__name__)
@@ -116,3 +128,22 @@ def test_chapter_table_says_which_checks_agree_by_construction(ngspice):
     assert "consistent (by construction)" in text and "agrees" in text
     row_25 = next(line for line in text.splitlines() if "(I_C = 2 mA), 25 °C" in line)
     assert "consistent (by construction)" in row_25 and "| agrees" not in row_25
+
+
+def test_the_offset_copy_sees_eq_14_and_a_wrong_signed_offset(ngspice):
+    """The nominal deck passes with eq 14 in place of eq 13 (its dividers match) and no deck set an offset: the
+    second copy, 9 mV of offset and R13 2 % low, agrees with eq 13 with the offset and the bias, and would fail
+    with eq 14 or with the offset's sign flipped (a mutation the nominal rows cannot see)."""
+    from handbook.sources import an94002
+    from handbook.spice.limiter import decks
+
+    c = limiters.opamp()
+    row = next(r for r in evaluate(c) if r["id"] == "limiter-opamp-vcs-offset")
+    assert row["agrees"], row
+    p = {**decks.opamp_defaults(), "vos": 9e-3}
+    p["r13"] *= 1 - decks.MISMATCH
+    net = (p["r9"], p["r10"], p["r11"], p["r12"], p["r13"])
+    eq14 = an94002.v_cs_matched(p["zener_voltage"], p["r9"], p["r10"], p["r11"])
+    flipped = decks.trip_voltage({**p, "vos": -p["vos"]})
+    for wrong in (eq14, flipped, an94002.v_cs_trip(p["zener_voltage"], *net, -p["vos"])):
+        assert abs(wrong / row["spice"] - 1) > 5 * row["rtol"], wrong

@@ -194,6 +194,10 @@ LAG = ("the equation leaves out the LM358's finite gain and 7 Hz pole (the outpu
        "currents (about 0.1 %)")
 
 
+#: the second copy's level-shift mismatch: R13 this fraction low (eq 13 and eq 14 part there)
+MISMATCH = 0.02
+
+
 def opamp(p: dict | None = None) -> Circuit:
     """AN94002 figure 3 with the note's values: the trip as the motor current ramps, and the level shift."""
     p = {**opamp_defaults(), **(p or {})}
@@ -209,7 +213,21 @@ def opamp(p: dict | None = None) -> Circuit:
         Check("limiter-opamp-vcs", "V_cs where the output switches (eq 13)", "V", eq_vcs, "vcs_trip", 0.01, LAG),
         Check("limiter-opamp-itrip", "motor current where the output switches (eq 13 / R7)", "A", eq_vcs / p["r7"],
               "i_trip", 0.01, LAG + "; R12's 0.4 mA also flows in R7 (0.04 %)"))
-    deck = _opamp_deck("AN94002 figure 3: op-amp limiter", [p])
+    # a second copy that eq 14 and a wrong-signed offset term cannot pass: the note's offset (9 mV, LM358 over
+    # temperature) and a level shift 2 % off the reference (R13 low), where eq 13 and eq 14 part
+    q = {**p, "vos": an94002.params()["offset"], "r13": p["r13"] * (1 - MISMATCH)}
+    eq_q = trip_voltage(q)
+    if eq_q > 0:
+        q["i_max"] = 2 * eq_q / q["r7"]
+        eq14 = an94002.v_cs_matched(q["zener_voltage"], q["r9"], q["r10"], q["r11"]) / eq_q - 1
+        wrong_sign = 2 * q["vos"] / an94002.factor_a(q["r12"], q["r13"]) / eq_q
+        checks += (Check("limiter-opamp-vcs-offset", f"V_cs where the output switches, with {q['vos'] * 1e3:g} mV of "
+                         f"offset and R13 {MISMATCH:.0%} low (eq 13 with the offset and bias)", "V", eq_q, "vcs_trip_1",
+                         0.015, "the equation is eq 13 with the offset referred through A and the bias currents' node "
+                         f"terms; here eq 14 would be {eq14:+.0%} off and a wrong-signed offset {wrong_sign:.0%}; the "
+                         "LM358's finite gain and 7 Hz pole need a few hundred microvolts of overdrive while the current "
+                         "ramps, a larger share of this smaller V_cs (about 0.8 %): ±1.5 %"),)
+    deck = _opamp_deck("AN94002 figure 3: op-amp limiter", [p] + ([q] if eq_q > 0 else []))
     return Circuit("limiter-opamp", "Op-amp current limiter", "AN94002 figure 3", parts, deck, checks,
                    draw=lambda: draw_opamp(parts))
 
