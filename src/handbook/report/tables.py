@@ -66,7 +66,7 @@ ERRATA_KINDS = {"misprint": "misprint", "inconsistent": "inconsistent", "wrong m
 def folded(summary: str, body) -> Markdown:
     """A proof table (or any long body) folded away behind a one-line summary a reader can open: a MyST dropdown,
     which the book renders as a toggle and the PDF prints open."""
-    text = body.data if isinstance(body, Markdown) else str(body)
+    text = body.data if isinstance(body, Markdown) else readable(str(body))
     return Markdown(f":::{{dropdown}} {readable(summary)}\n\n{text}\n:::")
 
 

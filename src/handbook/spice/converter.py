@@ -139,7 +139,7 @@ def circuit(p: dict | None = None) -> Circuit:
               kind="sanity"),
         Check("tca5600-t1", "charging time t1 (the circuit: L/R1 ln(V / (V - V12(H))))", "s", x["t1"], "t1", 0.003,
               "the exact charge of L1 through R1, V = VCC2 - V_CE(sat); the step is 0.05 % of the period and the "
-              "switch's 1 mOhm at most 0.15 % of R1: ±0.3 %"),
+              "switch's 1 mΩ at most 0.15 % of R1: ±0.3 %"),
         Check("tca5600-t1-eq2", "charging time t1 by eq 2, its bias removed (R1's drop at V12(H)/2)", "s",
               x["t1_eq2_avg"], "t1", 0.003,
               f"{ramp}: printed eq 2 is longer by about V12(H)/(2 V_L-) (here {e['t1'] / x['t1'] - 1:+.1%} against "
