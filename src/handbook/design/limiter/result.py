@@ -35,6 +35,8 @@ IC_LIMIT_MIN = {"TDA5144": 1.8, "TDA5143": 0.7}
 #: the highest motor supply the zener can be fed from, V: the TDA5144's V_MOT maximum (TDA5144 datasheet, June 1994:
 #: 1.7 to 16 V), the board's own limit ("up to a supply voltage of 16 V", AN94002 section 2)
 SUPPLY_MAX = 16.0
+#: the least voltage R14 needs across it at the lowest supply, D1 at its highest, to feed D1 (V)
+R14_V_MIN = 0.5
 
 
 @dataclass(frozen=True)
@@ -134,7 +136,7 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
                          "window or tighten the tolerances (the divider errors reach the trip multiplied by about "
                          f"V_D1 / V_cs){text}", {"v_drop_min": result["v_drop"], "r7": r7, **levers})
     result["r7_rating"], result["r7_package"] = ratings.resistor(result["p_r7"], ambient(s))
-    if board or net.zener_range(s)[1] < s["v_supply_min"] - 0.5:
+    if net.zener_range(s)[1] < s["v_supply_min"] - R14_V_MIN:  # always so on the board (supply_rated)
         result.update(zener_feed(s, float(v["divider_current"])))
     else:
         result.update(r14=None, p_r14=None, i_zener_min=None, p_zener=None)
@@ -181,11 +183,11 @@ def supply_rated(s: dict) -> None:
         raise Infeasible(TABLE, f"v_supply_min = {s['v_supply_min']:g} V is above v_supply_max = "
                          f"{s['v_supply_max']:g} V", {"v_supply_max": s["v_supply_min"]})
     vz_high = net.zener_range(s)[1]
-    if vz_high >= s["v_supply_min"] - 0.5:
+    if vz_high >= s["v_supply_min"] - R14_V_MIN:
         raise Infeasible(TABLE, f"D1 reaches {vz_high:.3g} V at its tolerance and drift, too close to the lowest "
-                         f"supply v_supply_min = {s['v_supply_min']:g} V for R14 to feed it (at least 0.5 V across "
-                         "R14): choose a lower zener_voltage", {"zener_voltage_max": s["zener_voltage"] *
-                                                               (s["v_supply_min"] - 0.5) / vz_high})
+                         f"supply v_supply_min = {s['v_supply_min']:g} V for R14 to feed it (at least {R14_V_MIN:g} V "
+                         "across R14): choose a lower zener_voltage",
+                         {"zener_voltage_max": s["zener_voltage"] * (s["v_supply_min"] - R14_V_MIN) / vz_high})
 
 
 def zener_feed(s: dict, i_divider: float) -> dict:
