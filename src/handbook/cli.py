@@ -247,8 +247,8 @@ def cmd_spice(args) -> int:
             print(json.dumps({"error": {"exit": 4, "message": str(exc),
                                         "skipped": isinstance(exc, spice.SpiceUnavailable)}}, indent=1))
         return 4
-    keys = ("id", "circuit", "quantity", "unit", "equation", "spice", "rel_diff", "agrees", "rtol", "why", "kind",
-            "verdict")
+    keys = ("id", "circuit", "quantity", "unit", "equation", "spice", "rel_diff", "expected_difference", "residual",
+            "agrees", "rtol", "why", "kind", "verdict", "faults_seen")
     for r in rows:
         if "error" in r:
             print(f"error: {r['error']}", file=sys.stderr)
@@ -261,10 +261,11 @@ def cmd_spice(args) -> int:
         unit = {r["unit"]: r["unit"].replace("ohm", "Ω") for r in rows}
         print(fit_table([[r["id"], eng(r["equation"], unit[r["unit"]]) if "error" not in r else "—",
                           eng(r["spice"], unit[r["unit"]]) if "error" not in r else "—",
-                          f"{r['rel_diff']:.2%}" if "error" not in r else "—",
+                          f"{(r['spice'] - r['equation']) / r['equation']:+.2%}" if "error" not in r else "—",
+                          f"{r['expected_difference']:+.2%}" if "error" not in r else "—",
                           r.get("error") or (r["verdict"] if r["agrees"] else "DIFFERS") + ": " + r["quantity"]]
                          for r in rows],
-                        ["id", "equation", "SPICE", "diff", "verdict: quantity"], [30, 12, 12, 10]))
+                        ["id", "equation", "SPICE", "diff", "expected", "verdict: quantity"], [30, 12, 12, 8, 8]))
     return 0 if all(r["agrees"] for r in rows) else 1
 
 
@@ -341,7 +342,8 @@ def main(argv=None) -> int:
     p.set_defaults(func=cmd_design)
     p = sub.add_parser("spice", help="every circuit's SPICE checks: equation against ngspice")
     p.add_argument("--json", action="store_true",
-                   help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, agrees, rtol, why, kind, verdict")
+                   help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, expected_difference, residual, "
+                        "agrees, rtol, why, kind, verdict, faults_seen")
     p.set_defaults(func=cmd_spice)
     p = sub.add_parser("render", help="render a re-run chapter (or 'Design your own' on a spec) to a web page with "
                        "the book's look, offline")

@@ -54,9 +54,13 @@ def test_spice_command_and_designs_confirmed_by_simulation():
     out = subprocess.run([sys.executable, "-m", "handbook", "spice", "--json"], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     rows = json.loads(out.stdout)
-    assert {"id", "circuit", "quantity", "equation", "spice", "rel_diff", "agrees", "rtol", "why", "kind",
-            "verdict"} <= set(rows[0])
-    assert all(r["rel_diff"] <= r["rtol"] and r["why"] for r in rows)
+    assert {"id", "circuit", "quantity", "equation", "spice", "rel_diff", "expected_difference", "residual", "agrees",
+            "rtol", "why", "kind", "verdict", "faults_seen"} <= set(rows[0])
+    for r in rows:  # agreement is the residual (SPICE's difference less the expected one) inside the tolerance
+        signed = (r["spice"] - r["equation"]) / r["equation"]
+        assert abs(signed - r["expected_difference"]) <= r["rtol"] and r["why"], r["id"]
+    assert any(r["expected_difference"] and r["rel_diff"] > r["rtol"] for r in rows)  # physics, not tolerance
+    assert all(isinstance(r["faults_seen"], list) for r in rows) and any(r["faults_seen"] for r in rows)
     assert all(r["verdict"] == ("agrees" if r["kind"] == "independent" else "consistent (by construction)")
                for r in rows)
     assert len({r["circuit"] for r in rows}) >= 9 and all(r["agrees"] for r in rows)
@@ -187,6 +191,7 @@ def test_chapter_table_names_the_circuit_when_decks_share_quantities():
 
     text = chapter_table(class_d.circuit(), class_d.circuit_8ohm(), class_d.ripple()).data
     assert text.splitlines()[0].lstrip("| ").startswith("circuit")
-    assert "R_L = 8 Ω, AC" in text and "±0.1 %" in text and "Why each tolerance" in text
+    assert "R_L = 8 Ω, AC" in text and "±0.05 %" in text and "Why each tolerance" in text
+    assert "Faults put into the equations (8; each seen by an independent check)" in text
     one = chapter_table(converter.circuit()).data
-    assert not one.splitlines()[0].lstrip("| ").startswith("circuit") and "±0.5 %" in one
+    assert not one.splitlines()[0].lstrip("| ").startswith("circuit") and "±0.1 %" in one

@@ -3,7 +3,6 @@ designs confirmed by simulation (`python -m handbook design SPEC.toml --spice`).
 from __future__ import annotations
 
 from . import class_d, converter, decoupling, limiter, speed, timers
-from .circuit import evaluate
 from .runner import SpiceError, SpiceUnavailable, available, why_unavailable
 
 #: the circuit builders, each () -> Circuit with the notes' values
@@ -24,21 +23,24 @@ def circuits() -> list:
 
 
 def rows() -> list[dict]:
-    """One row per check of every circuit: id, circuit, quantity, unit, equation, spice, rel_diff, agrees, rtol,
-    why, kind
-    ("independent" or "sanity": agrees by construction) and verdict (what the book says: "agrees",
-    "consistent (by construction)" or "differs").
+    """One row per check of every circuit: id, circuit, quantity, unit, equation, spice, rel_diff,
+    expected_difference (what physics predicts, :class:`~.circuit.Check`), residual, agrees, rtol, why, kind
+    ("independent" or "sanity": agrees by construction), verdict (what the book says: "agrees",
+    "consistent (by construction)" or "differs") and faults_seen (the deliberate equation faults of
+    :mod:`.referee` this row would catch).
     A circuit whose run fails gives one row saying so (agrees False, its message in "error"); the others
     are still reported. A missing ngspice raises SpiceUnavailable (nothing can be reported)."""
+    from .referee import refereed
+
     out = []
     for c in circuits():
         try:
-            out += evaluate(c)
+            out += refereed(c)
         except SpiceError as exc:
             out.append({"id": f"{c.id}-run", "circuit": c.id, "quantity": "the simulation itself", "unit": "",
                         "equation": float("nan"), "spice": float("nan"), "rel_diff": float("nan"), "agrees": False,
-                        "rtol": 0.0, "why": "", "kind": "independent", "verdict": "differs",
-                        "error": str(exc)})
+                        "expected_difference": 0.0, "residual": float("nan"), "rtol": 0.0, "why": "",
+                        "kind": "independent", "verdict": "differs", "faults_seen": [], "error": str(exc)})
     return out
 
 
@@ -79,11 +81,11 @@ CONFIRM = {
          "current moves V_Z by a few mV (0.03 % seen): ±0.2 %", "independent")),
     "class_d": (
         ("output filter corner with the load", "Hz", "f_corner", 0.001,
-         "2 L in series with C_BYP across R_L is exactly the bridge's network; the AC grid (100 points a decade, "
+         "2 L in series with C_BYP across R_L is exactly the bridge's network; the AC grid (200 points a decade, "
          "interpolated) is all that is left (0.003 % seen): ±0.1 %", "independent"),
         ("switching residue at the load, rms, worst of the eight corners", "V", "ripple_at_load", 0.002,
          "the design keeps only the square wave's fundamental (8 V_s / pi) and ideal edges; SPICE every harmonic "
-         "(+0.07 % rms) and the 25/26 ns edges, a hundred steps a period (0.1 % seen): ±0.2 %", "independent")),
+         "(+0.07 % rms) and the 25/26 ns edges; 400 steps a period: ±0.2 %", "independent")),
 }
 
 

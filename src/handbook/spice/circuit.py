@@ -53,6 +53,9 @@ class Check:
     rtol: float  # agreement the chapter states
     why: str  # why that tolerance: what the equation leaves out
     kind: str = "independent"  # or "sanity": agrees by construction (see the module text)
+    #: the difference physics predicts, (SPICE - equation) / equation, from what ``why`` names the equation
+    #: leaving out (computed, never fitted); ``rtol`` is then the numerical method's alone, about it
+    expected: float = 0.0
 
     def __post_init__(self):
         if self.kind not in KINDS:
@@ -68,9 +71,28 @@ class Circuit:
     netlist: str  # complete deck: title line, models, elements, analysis, .meas lines
     checks: tuple[Check, ...]
     draw: Callable = field(repr=False, compare=False, default=None)  # () -> schemdraw.Drawing of the same parts
+    #: () -> the same circuit built again (set by :func:`rebuildable`): the referee builds it with a faulty equation
+    rebuild: Callable = field(repr=False, compare=False, default=None)
 
     def part(self, ref: str) -> Part:
         return next(p for p in self.parts if p.ref == ref)
+
+
+def rebuildable(builder: Callable[..., Circuit]) -> Callable[..., Circuit]:
+    """A circuit builder whose circuits know how to build themselves again with the same parameters
+    (``Circuit.rebuild``): what :mod:`.referee` needs to put a fault in an equation and read the checks again."""
+    import functools
+    import inspect
+    from dataclasses import replace
+
+    takes_params = bool(inspect.signature(builder).parameters)
+
+    @functools.wraps(builder)
+    def build(p: dict | None = None) -> Circuit:
+        c = builder(p) if takes_params else builder()
+        return replace(c, rebuild=functools.partial(build, None if p is None else dict(p)))
+
+    return build
 
 
 def with_defaults(defaults: dict, p: dict | None) -> dict:
@@ -81,18 +103,33 @@ def with_defaults(defaults: dict, p: dict | None) -> dict:
     return {**defaults, **(p or {})}
 
 
-def evaluate(circuit: Circuit, run=None) -> list[dict]:
-    """Run the netlist once and compare every check: rows (id, circuit, quantity, unit, equation, spice,
-    rel_diff, agrees, rtol, why, kind, verdict)."""
+def judge(check: Check, equation: float, value: float) -> dict:
+    """One check's figures: rel_diff |SPICE - equation| / |equation| (|SPICE| where the equation is 0),
+    expected_difference (the check's ``expected``), residual (the signed difference less the expected) and
+    agrees (|residual| <= rtol)."""
+    signed = (value - equation) / abs(equation) if equation else value
+    residual = signed - check.expected
+    return {"rel_diff": abs(signed), "expected_difference": check.expected, "residual": residual,
+            "agrees": bool(abs(residual) <= check.rtol)}
+
+
+def measured(circuit: Circuit, run=None) -> dict:
+    """The netlist's `.meas` results (one ngspice run)."""
     from .runner import run as run_spice
 
-    measured = (run or run_spice)(circuit.netlist)
+    return (run or run_spice)(circuit.netlist)
+
+
+def evaluate(circuit: Circuit, run=None, values: dict | None = None) -> list[dict]:
+    """Run the netlist once (or take ``values``, its `.meas` results) and compare every check: rows (id,
+    circuit, quantity, unit, equation, spice, rel_diff, expected_difference, residual, agrees, rtol, why, kind,
+    verdict)."""
+    got = values if values is not None else measured(circuit, run)
     rows = []
     for c in circuit.checks:
-        value, equation = float(measured[c.measure.lower()]), float(c.equation)
-        rel = abs(value - equation) / abs(equation) if equation else abs(value)
+        value, equation = float(got[c.measure.lower()]), float(c.equation)
         rows.append({"id": c.id, "circuit": circuit.id, "quantity": c.quantity, "unit": c.unit,
-                     "equation": equation, "spice": value, "rel_diff": rel, "agrees": bool(rel <= c.rtol),
+                     "equation": equation, "spice": value, **judge(c, equation, value),
                      "rtol": c.rtol, "why": c.why, "kind": c.kind})
         rows[-1]["verdict"] = verdict(rows[-1])
     return rows

@@ -1,0 +1,116 @@
+"""SPICE as a referee that can fail (handbook.spice.referee): every check holds at 20 operating points drawn from
+its chapter's assumptions, and every deliberate fault in an equation is seen by an independent check of its
+circuit. Together under a minute on the 2-core machine (about 25 s of ngspice)."""
+import math
+
+import pytest
+
+from handbook.spice import checks, referee
+from handbook.spice.circuit import evaluate, judge
+
+POINTS = 20
+
+
+def _name(build):
+    return f"{build.__module__.split('.')[-1]}.{build.__name__}"
+
+
+@pytest.mark.parametrize("build", list(referee.SPACES), ids=_name)
+def test_every_check_holds_at_twenty_operating_points(ngspice, build):
+    """A tolerance fitted to one operating point fails here: each check, its expected difference computed
+    from physics at each point, must fall inside its numerical tolerance at all of them."""
+    bad = []
+    for p in referee.draw(build, POINTS):
+        for r in evaluate(build(p)):
+            if not r["agrees"]:
+                bad.append((r["id"], f"residual {r['residual']:+.4%} against ±{r['rtol']:.3%}", p))
+    assert not bad, bad[:3]
+
+
+def test_the_points_cover_their_ranges():
+    """Twenty seeded points reach both ends of every range (not twenty copies of one corner)."""
+    for build, space in referee.SPACES.items():
+        pts = referee.draw(build, POINTS)
+        for key, (lo, hi) in space.items():
+            got = [p[key] for p in pts]
+            assert min(got) < lo + 0.25 * (hi - lo) and max(got) > hi - 0.25 * (hi - lo), (_name(build), key)
+
+
+@pytest.fixture(scope="module")
+def refereed(ngspice):
+    return {b: referee.refereed(b()) for b in checks.BUILDERS}
+
+
+def test_every_fault_is_seen_by_an_independent_check_of_its_circuit(refereed):
+    """The mutation test: each fault in :data:`referee.FAULTS` (a sign flipped, a term dropped, a factor 2, eq
+    14 for eq 13) is seen by at least one independent row of its circuit. A circuit whose checks are all
+    sanity checks (the timers) must see them with those, and says so (the chapters call them by construction)."""
+    unseen = []
+    for rows in refereed.values():
+        cid = rows[0]["circuit"]
+        independent = any(r["kind"] == "independent" for r in rows)
+        for fault in referee.FAULTS[cid]:
+            by = [r["id"] for r in rows if fault.label in r["faults_seen"]
+                  and (r["kind"] == "independent" or not independent)]
+            if not by:
+                unseen.append((cid, fault.label))
+    assert not unseen
+
+
+def test_every_circuit_has_faults_and_each_fault_reaches_its_equation():
+    """A fault whose patch reaches nothing (a function called through another name) would be 'seen' by no
+    row and prove nothing: each must change at least one check's equation column, or remove it."""
+    for build in checks.BUILDERS:
+        c = build()
+        assert referee.FAULTS.get(c.id), c.id
+        true = {ch.id: float(ch.equation) for ch in c.checks}
+        for fault in referee.FAULTS[c.id]:
+            faulty = referee.faulty_equations(c, fault)
+            changed = [k for k, v in true.items() if k not in faulty or not math.isclose(faulty[k], v, rel_tol=1e-9)]
+            assert changed, (c.id, fault.label)
+
+
+def test_the_eq13_offset_faults_are_seen_by_the_offset_copy_and_the_judgement_is_the_residual(refereed):
+    """Hand-checked: the offset copy sees the offset's sign flipped, and a row agrees by its residual (SPICE's
+    difference less the expected one), not by the raw difference."""
+    rows = {r["id"]: r for r in refereed[checks.BUILDERS[1]]}
+    row = rows["limiter-opamp-vcs-offset"]
+    assert any("offset's sign flipped" in f for f in row["faults_seen"])
+    assert row["rel_diff"] > row["rtol"] and row["agrees"]  # 0.8 % raw, the LM358's lag expected
+    assert row["residual"] == pytest.approx((row["spice"] - row["equation"]) / row["equation"]
+                                            - row["expected_difference"])
+
+
+def test_judge_by_hand():
+    from handbook.spice.circuit import Check
+
+    c = Check("x", "x", "V", 1.0, "x", 0.001, "why", expected=0.005)
+    assert judge(c, 1.0, 1.0055)["agrees"] and not judge(c, 1.0, 1.0065)["agrees"]
+    assert not judge(c, 1.0, 1.0)["agrees"]  # the expected difference missing is a difference too
+
+
+def test_no_tolerance_exceeds_its_stated_reason():
+    """Every row's reason names its tolerance, and the tolerance is the number it names: a ±x % at the end of
+    the reason equal to rtol (the reason of a tolerance computed per point, the speed loop's, names it)."""
+    import re
+
+    for build in checks.BUILDERS:
+        for ch in build().checks:
+            stated = re.findall(r"±([0-9.]+) %", ch.why)
+            assert stated, ch.id
+            assert float(stated[-1]) / 100 == pytest.approx(ch.rtol, rel=0.05), (ch.id, stated[-1], ch.rtol)
+
+
+def test_a_check_too_loose_to_referee_sees_nothing(ngspice):
+    """The mutation test can fail: the op-amp limiter with every tolerance at ±1000 % sees none of its faults but
+    the one whose equation gives no trip at all (A upside down makes eq 13 negative)."""
+    from dataclasses import replace
+
+    from handbook.spice import limiter
+    from handbook.spice.circuit import measured
+
+    c = limiter.opamp()
+    loose = replace(c, checks=tuple(replace(ch, rtol=10.0) for ch in c.checks))
+    got = {f for fs in referee.seen(loose, measured(c)).values() for f in fs}
+    assert got == {"AN94002 eq 13: R12 and R13 swapped (A upside down)"}
+    assert any(referee.seen(c, measured(c)).values())
