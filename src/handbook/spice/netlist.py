@@ -300,6 +300,8 @@ def write(texts: dict[str, str], folder) -> list[Path]:
     folder = Path(folder)
     made = not folder.exists()
     temps: list[Path] = []
+    umask = os.umask(0)
+    os.umask(umask)
     try:
         folder.mkdir(parents=True, exist_ok=True)
         for name, text in texts.items():
@@ -307,6 +309,7 @@ def write(texts: dict[str, str], folder) -> list[Path]:
             temps.append(Path(tmp))
             with os.fdopen(fd, "w", encoding="utf-8") as fh:
                 fh.write(text)
+            os.chmod(tmp, 0o666 & ~umask)  # a plain file's mode, not mkstemp's private one
         for tmp, name in zip(temps, texts):
             os.replace(tmp, folder / name)
     except BaseException:
