@@ -295,27 +295,50 @@ def nonportable(text: str) -> list[tuple[int, str, str]]:
 
 def write(texts: dict[str, str], folder) -> list[Path]:
     """Write {file name: deck} into ``folder`` (made if missing): every file or none. Each deck goes to a
-    temporary file in the folder first; only when all are written are they renamed into place. On an error
-    the temporary files, and the folder if this call made it, are removed and the OSError is raised."""
+    temporary file in the folder first; only when all are written are they renamed into place, a file they
+    replace set aside until the last is in. On an error the folder is put back as it was (the files set aside
+    restored, the temporary files removed, the folder removed if this call made it) and the OSError is raised."""
     folder = Path(folder)
     made = not folder.exists()
-    temps: list[Path] = []
+    temps: dict[str, Path] = {}
+    placed: list[Path] = []
+    aside: dict[Path, Path] = {}  # a file replaced -> where it waits
     umask = os.umask(0)
     os.umask(umask)
     try:
         folder.mkdir(parents=True, exist_ok=True)
         for name, text in texts.items():
             fd, tmp = tempfile.mkstemp(prefix=f".{name}-", suffix=".tmp", dir=folder)
-            temps.append(Path(tmp))
+            temps[name] = Path(tmp)
             with os.fdopen(fd, "w", encoding="utf-8") as fh:
                 fh.write(text)
             os.chmod(tmp, 0o666 & ~umask)  # a plain file's mode, not mkstemp's private one
-        for tmp, name in zip(temps, texts):
-            os.replace(tmp, folder / name)
+        for name, tmp in list(temps.items()):
+            target = folder / name
+            if target.exists():
+                fd, old = tempfile.mkstemp(prefix=f".{name}-", suffix=".old", dir=folder)
+                os.close(fd)
+                temps[f"{name}.old"] = Path(old)  # removed on an error until the old file is in it
+                os.replace(target, old)
+                aside[target] = temps.pop(f"{name}.old")
+            os.replace(tmp, target)
+            placed.append(target)
     except BaseException:
-        for tmp in temps:
-            tmp.unlink(missing_ok=True)
+        _put_back(placed, aside, temps.values())
         if made and folder.is_dir() and not any(folder.iterdir()):
             folder.rmdir()
         raise
+    for old in aside.values():
+        old.unlink(missing_ok=True)
     return [folder / name for name in texts]
+
+
+def _put_back(placed, aside: dict, temps) -> None:
+    """Undo a :func:`write` that failed: the new files removed, the old ones back, the temporary files gone."""
+    for target in placed:
+        target.unlink(missing_ok=True)
+    for target, old in aside.items():
+        if old.exists():
+            os.replace(old, target)
+    for tmp in temps:
+        tmp.unlink(missing_ok=True)
