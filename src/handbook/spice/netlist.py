@@ -29,6 +29,7 @@ import math
 import os
 import re
 import tempfile
+import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -45,6 +46,8 @@ from .limiter import decks as lim
 HARMONICS = tuple(range(1, 16, 2))
 #: DC sweep points of the limiter's motor current
 SWEEP_POINTS = 2000
+#: columns of a deck's line (longer element lines continue on `+` lines, the header wraps)
+LINE = 110
 
 
 @dataclass(frozen=True)
@@ -67,17 +70,35 @@ class Deck:
         head = [f"* {self.title}",
                 f"* handbook {meta['version']}: the [{self.table}] design, `python -m handbook design --netlist`",
                 f"* spec sha256 {meta['spec_sha256']}",
-                "* the circuit at its nominal values: " + (self.nominal or "every part at its designed value"), "*",
-                "* parts:", *(f"*   {p.ref:<8} {_value(p):<14} {p.note}".rstrip() for p in self.parts), "*",
-                f"* analysis: {self.analysis}", "* measurements (the design's figure at this nominal point):",
-                *(f"*   {c.measure:<10} {c.quantity}: {eng(c.equation, _unit(c.unit))} expected, within {c.rtol:.2%}"
-                  for c in self.checks), "*"]
-        return "\n".join([*head, *self.body, ".end"]) + "\n"
+                *_comment("the circuit at its nominal values: " + (self.nominal or "every part at its designed value")),
+                "*", "* parts:", *(f"*   {p.ref:<8} {_value(p):<14} {p.note}".rstrip() for p in self.parts), "*",
+                *_comment(f"analysis: {self.analysis}"), "* measurements (the design's figure at this nominal point):",
+                *(line for c in self.checks for line in _comment(
+                    f"{c.measure:<10} {c.quantity}: {eng(c.equation, _unit(c.unit))} expected, within {c.rtol:.2%}",
+                    "*   ", "*" + " " * 16)), "*"]
+        return "\n".join([*head, *_wrapped(self.body), ".end"]) + "\n"
 
     def circuit(self, meta: dict | None = None) -> Circuit:
         """The deck as a :class:`~.circuit.Circuit` whose checks are the design's figures (for :func:`evaluate`)."""
         text = self.text(meta or {"version": "", "spec_sha256": ""})
         return Circuit(self.name, self.title, f"[{self.table}] design", self.parts, text, self.checks)
+
+
+def _comment(text: str, first: str = "* ", then: str = "*   ") -> list[str]:
+    """A comment wrapped at LINE columns."""
+    return textwrap.wrap(text, LINE, initial_indent=first, subsequent_indent=then, break_on_hyphens=False)
+
+
+def _wrapped(lines) -> list[str]:
+    """Element lines longer than LINE columns continued on `+` lines (HSPICE reads at most 1024 columns a line);
+    comment and dot lines as they are (a `.meas` stays one line, which a reader can comment out whole)."""
+    out = []
+    for line in lines:
+        if line.startswith(("*", ".")) or len(line) <= LINE:
+            out.append(line)
+        else:
+            out += textwrap.wrap(line, LINE, subsequent_indent="+ ", break_long_words=False, break_on_hyphens=False)
+    return out
 
 
 def _unit(unit: str) -> str:
@@ -128,11 +149,12 @@ def commutation(result) -> list[Deck]:
          "rpm_max": s["rpm_max"], "i_ch": i_ch, "i_dis": 2 * i_ch,
          "v_low": _typical(timers.CD_LOW[1], s["v_low_min"], s["v_low_max"]),
          "v_high": _typical(timers.CD_HIGH[1], s["v_high_min"], s["v_high_max"])}
-    typical = ("the TDA5144's typical currents and levels (the spec's mid-range where it excludes them), the sink "
-               "twice the charge current as the --spice confirmation takes it; its corners are in --spice")
+    typical = "the TDA5144's typical currents and levels (the middle of the spec's range where it excludes them)"
     out = [_from(timers.commutation_delay(q), "commutation", "commutation.cir",
                  f"transient, three electrical cycles at {s['rpm_min']:g} rpm then at {s['rpm_max']:g} rpm (the "
-                 "back-EMF zero crossings as gate sources)", typical)]
+                 "back-EMF zero crossings as gate sources)",
+                 f"{typical}, the sink twice the charge current as the --spice confirmation takes it; the corners are "
+                 "in --spice")]
     if result.cap_st is not None:
         st = {"cap_st": result.cap_st, "v_low": s["v_st_low"], "v_high": s["v_st_high"],
               "i_st": _typical(note.FACTS["cap_st_current"].value[1], s["i_st_min"], s["i_st_max"])}
@@ -276,11 +298,13 @@ def nonportable(text: str) -> list[tuple[int, str, str]]:
     """[(line number, line, what is wrong)] for every line of a deck another SPICE may not read
     (:data:`NGSPICE_ONLY`), a `.meas` without its analysis (.meas tran|ac|dc name ...), more or fewer than one
     analysis, or no `.end` at the end. Comment lines are not read (the title is the first line)."""
-    out = []
-    lines = text.splitlines()
-    for n, line in enumerate(lines[1:], start=2):
-        if not line.strip() or line.lstrip().startswith("*"):
-            continue
+    out, lines, logical = [], text.splitlines(), []
+    for n, line in enumerate(lines[1:], start=2):  # continuation lines joined to the line they continue
+        if line.startswith("+") and logical:
+            logical[-1] = (logical[-1][0], logical[-1][1] + " " + line[1:].strip())
+        elif line.strip() and not line.lstrip().startswith("*"):
+            logical.append((n, line))
+    for n, line in logical:
         out += [(n, line, why) for pattern, why in NGSPICE_ONLY if re.search(pattern, line, re.IGNORECASE)]
         if re.match(r"\s*\.meas(ure)?\b", line, re.IGNORECASE) and not re.match(
                 r"\s*\.meas(ure)?\s+(tran|ac|dc)\s+\w+\s", line, re.IGNORECASE):
