@@ -103,6 +103,7 @@ def test_decks_are_plain_spice_and_name_their_design(exported):
     for deck in decks:
         text = deck.text(meta)
         assert netlist.nonportable(text) == [], deck.name
+        assert text.isascii(), deck.name
         head = [ln for ln in text.splitlines() if ln.startswith("*")][:4]
         assert f"handbook {meta['version']}" in head[1] and f"[{deck.table}]" in head[1]
         assert head[2] == f"* spec sha256 {meta['spec_sha256']}"

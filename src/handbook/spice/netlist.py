@@ -46,6 +46,8 @@ from .limiter import decks as lim
 HARMONICS = tuple(range(1, 16, 2))
 #: DC sweep points of the limiter's motor current
 SWEEP_POINTS = 2000
+#: the units' signs a deck writes in ASCII
+ASCII = str.maketrans({"µ": "u", "Ω": "ohm", "±": "+-", "°": " deg", "−": "-", "×": "x"})
 #: columns of a deck's line (longer element lines continue on `+` lines, the header wraps)
 LINE = 110
 
@@ -76,7 +78,8 @@ class Deck:
                 *(line for c in self.checks for line in _comment(
                     f"{c.measure:<10} {c.quantity}: {eng(c.equation, _unit(c.unit))} expected, within {c.rtol:.2%}",
                     "*   ", "*" + " " * 16)), "*"]
-        return "\n".join([*head, *_wrapped(self.body), ".end"]) + "\n"
+        text = "\n".join([*head, *_wrapped(self.body), ".end"]) + "\n"
+        return text.translate(ASCII)  # a deck in ASCII: not every SPICE reads UTF-8, even in a comment
 
     def circuit(self, meta: dict | None = None) -> Circuit:
         """The deck as a :class:`~.circuit.Circuit` whose checks are the design's figures (for :func:`evaluate`)."""
@@ -106,7 +109,7 @@ def _unit(unit: str) -> str:
 
 
 def _value(p: Part) -> str:
-    return p.value if isinstance(p.value, str) else eng(p.value, _unit(p.unit))
+    return (p.value if isinstance(p.value, str) else eng(p.value, _unit(p.unit))).translate(ASCII)
 
 
 def plain(lines) -> list[str]:
@@ -241,7 +244,7 @@ def class_d(result) -> list[Deck]:
     grid = f"the AC grid ({cd.AC_PER_DECADE} points a decade, interpolated)"
     checks = (
         Check("netlist-class-d-corner", "filter corner with the load, phase -90 deg", "Hz",
-              eqs.filter_f0(result.l_out, result.c_out), "f_corner", 1e-3,
+              result.f_corner, "f_corner", 1e-3,
               f"2 L in series with C_BYP across R_L is the bridge's network: only {grid} (0.01 % seen): ±0.1 %"),
         Check("netlist-class-d-q", "filter Q with the load (gain at the corner)", "1",
               eqs.filter_q(result.l_out, result.c_out, s["r_load"]), "q", 1e-3, f"the same network, {grid}: ±0.1 %"),
