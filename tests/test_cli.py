@@ -185,3 +185,82 @@ def test_a_source_matching_nothing_is_a_usage_error():
     out = subprocess.run([sys.executable, "-m", "handbook", "examples", "--source", "bogus"], capture_output=True,
                          text=True)
     assert out.returncode == 2 and "matches no entry" in out.stderr and "AN94002" in out.stderr
+
+
+def _design(tmp_path, text, *extra):
+    spec = tmp_path / "spec.toml"
+    spec.write_text(text)
+    return subprocess.run([sys.executable, "-m", "handbook", "design", str(spec), *extra], capture_output=True,
+                          text=True, timeout=120)
+
+
+def test_design_netlist_writes_the_tables_asked(tmp_path):
+    folder = tmp_path / "new" / "decks"  # made, parents too
+    out = _design(tmp_path, "[class_d]\np_out = 50.0\n[converter]\n", "--netlist", str(folder), "--json")
+    assert out.returncode == 0, out.stderr
+    info = json.loads(out.stdout)
+    assert info["netlist"] == {"folder": str(folder), "files": ["class_d.cir", "converter.cir"], "left_out": [],
+                               "not_asked": ["commutation", "current_limiter"]}
+    assert sorted(p.name for p in folder.iterdir()) == ["class_d.cir", "converter.cir"]  # no temporary file left
+    for name in info["netlist"]["files"]:
+        text = (folder / name).read_text()
+        assert f"spec sha256 {info['spec_sha256']}" in text and f"handbook {info['version']}" in text
+        assert text.rstrip().endswith(".end")
+    assert "--netlist DIR" in run("design", "--help")
+
+
+def test_design_netlist_leaves_out_a_table_that_cannot_be_met(tmp_path):
+    folder = tmp_path / "decks"
+    out = _design(tmp_path, "[class_d]\np_out = 500.0\n[current_limiter]\n", "--netlist", str(folder))
+    assert out.returncode == 3 and "Traceback" not in out.stderr
+    assert "netlist: [class_d] not written: it cannot be met" in out.stderr
+    assert [p.name for p in folder.iterdir()] == ["current_limiter.cir"]
+    out = _design(tmp_path, "[class_d]\np_out = 500.0\n", "--netlist", str(tmp_path / "none"))
+    assert out.returncode == 3 and "nothing designed" in out.stderr and not (tmp_path / "none").exists()
+
+
+def test_design_netlist_into_an_unwritable_folder_is_a_usage_error(tmp_path):
+    blocker = tmp_path / "afile"
+    blocker.write_text("x")
+    for folder, said in ((blocker / "decks", "cannot write the netlists into"), (blocker, "is a file, not a folder")):
+        out = _design(tmp_path, "[class_d]\n", "--netlist", str(folder), "--json")
+        assert out.returncode == 2 and "Traceback" not in out.stderr, out.stderr
+        assert said in out.stderr and str(folder) in out.stderr
+        assert json.loads(out.stdout)["error"]["exit"] == 2
+    assert blocker.read_text() == "x" and sorted(p.name for p in tmp_path.iterdir()) == ["afile", "spec.toml"]
+
+
+def test_design_netlist_is_written_whole_or_not_at_all(tmp_path, monkeypatch, capsys):
+    """A failure at any rename (here the disk filling up at the first or the second) leaves no new file and no new
+    folder behind, and a folder's old deck as it was (set aside, then put back)."""
+    import shutil
+
+    from handbook import cli
+    from handbook.spice import netlist
+
+    real, calls = netlist.os.replace, []
+
+    def failing(src, dst):
+        calls.append(dst)
+        if len(calls) == calls[0]:
+            raise OSError(28, "No space left on device")
+        return real(src, dst)
+
+    monkeypatch.setattr(netlist.os, "replace", failing)
+    spec = tmp_path / "spec.toml"
+    spec.write_text("[class_d]\n[converter]\n")
+    for fail_at in (1, 2):
+        for folder, before in ((tmp_path / "new", None), (tmp_path / "old", "old deck")):
+            if before:
+                folder.mkdir()
+                (folder / "class_d.cir").write_text(before)
+            calls[:] = [fail_at + 1]  # the first entry holds the call to fail at (counting itself)
+            assert cli.main(["design", str(spec), "--netlist", str(folder)]) == 2
+            err = capsys.readouterr().err
+            assert str(folder) in err and "No space left on device" in err and "nothing written" in err
+            if before is None:
+                assert not folder.exists()
+            else:
+                assert [p.name for p in folder.iterdir()] == ["class_d.cir"]
+                assert (folder / "class_d.cir").read_text() == before
+                shutil.rmtree(folder)

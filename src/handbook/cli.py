@@ -135,7 +135,6 @@ def _design_error(args, code: int, message: str, extra: dict | None = None) -> i
 
 def cmd_design(args) -> int:
     from .core import InputError
-    from .design import bom
     from .design import spec as specmod
     from .design.solvers import Infeasible
 
@@ -172,26 +171,67 @@ def cmd_design(args) -> int:
                     print(f"warning: --spice: [{table}] {warning}", file=sys.stderr)
         except (spice.SpiceUnavailable, spice.SpiceError) as exc:
             return _design_error(args, 4, f"--spice: {exc}")
-    if args.bom:  # the tables the spec asked for that designed; what was left out is said
-        asked = spec.asked
-        rows = bom.rows({t: r for t, r in designed.items() if t in asked})
-        left = [t for t in asked if t in failed]
-        for t in left:
-            print(f"bom: [{t}] left out: it cannot be met (above)", file=sys.stderr)
-        if rows:
-            try:
-                bom.write(rows, args.bom)
-            except OSError as exc:
-                return _design_error(args, 2, f"cannot write {args.bom}: {exc.strerror}")
-        else:
-            print(f"bom: nothing designed, {args.bom} not written", file=sys.stderr)
-        out["bom"] = {"rows": rows, "units": bom.UNITS, "left_out": left,
-                      "not_asked": [t for t in specmod.TABLES if t not in asked]}
+    for option, write in (("bom", _write_bom), ("netlist", _write_netlists)):
+        if getattr(args, option):  # the tables the spec asked for that designed; what was left out is said
+            code = write(args, spec, designed, failed, out)
+            if code:
+                return code
     if args.json:
         print(json.dumps({**out, **specmod.traced(spec)}, indent=1, default=float))
     else:
         _print_designs(out, failed, spec.asked)
     return 3 if failed else 0
+
+
+def _write_bom(args, spec, designed: dict, failed: dict, out: dict) -> int:
+    """--bom: the BOM of the tables the spec asked for that designed, written atomically; 0, or 2 (unwritable)."""
+    from .design import bom
+    from .design.spec import TABLES
+
+    asked = spec.asked
+    rows = bom.rows({t: r for t, r in designed.items() if t in asked})
+    left = [t for t in asked if t in failed]
+    for t in left:
+        print(f"bom: [{t}] left out: it cannot be met (above)", file=sys.stderr)
+    if rows:
+        try:
+            bom.write(rows, args.bom)
+        except OSError as exc:
+            return _design_error(args, 2, f"cannot write {args.bom}: {exc.strerror}")
+    else:
+        print(f"bom: nothing designed, {args.bom} not written", file=sys.stderr)
+    out["bom"] = {"rows": rows, "units": bom.UNITS, "left_out": left, "not_asked": [t for t in TABLES if t not in asked]}
+    return 0
+
+
+def _write_netlists(args, spec, designed: dict, failed: dict, out: dict) -> int:
+    """--netlist DIR: one plain SPICE deck per table the spec asked for that designed (the folder made if
+    missing), every file or none; 0, or 2 when DIR cannot be written (naming it; nothing is left behind)."""
+    from pathlib import Path
+
+    from .design.spec import TABLES, traced
+    from .spice import netlist
+
+    folder, asked = Path(args.netlist), spec.asked
+    left = [t for t in asked if t in failed]
+    for t in left:
+        print(f"netlist: [{t}] not written: it cannot be met (above)", file=sys.stderr)
+    decks = netlist.decks({t: r for t, r in designed.items() if t in asked})
+    meta = traced(spec)
+    texts = {d.name: d.text(meta) for d in decks}
+    if texts and folder.exists() and not folder.is_dir():
+        return _design_error(args, 2, f"--netlist: {folder} is a file, not a folder; nothing written")
+    if texts:
+        try:
+            netlist.write(texts, folder)
+        except OSError as exc:
+            return _design_error(args, 2, f"--netlist: cannot write the netlists into {folder}: "
+                                 f"{exc.strerror or exc}; nothing written")
+    else:
+        print(f"netlist: nothing designed, {folder} not written", file=sys.stderr)
+    out["netlist"] = {"folder": str(folder), "files": list(texts), "left_out": left,
+                      "not_asked": [t for t in TABLES if t not in asked]}
+    return 0
 
 
 def _print_designs(out: dict, failed: dict, asked: tuple = ()) -> None:
@@ -336,6 +376,13 @@ def main(argv=None) -> int:
     p.add_argument("--bom", metavar="FILE.csv",
                    help="also write a bill of materials (CSV; the same rows in --json): the tables the spec wrote (all "
                    "four if none), each part with its rating; a table that cannot be met is left out and named")
+    p.add_argument("--netlist", metavar="DIR",
+                   help="also write each designed circuit as a plain SPICE deck into DIR (made if missing): one .cir "
+                   "per table the spec wrote (all four if none; CAP-ST and CAP-TI in decks of their own), the "
+                   "designed parts at their nominal values, a header naming the design, the handbook's version, the "
+                   "spec's SHA-256 and every part, one analysis and .meas lines giving the design's figures; no "
+                   "ngspice-only syntax, every model in the file. A table that cannot be met is not written and "
+                   "named; an unwritable DIR exits 2 with nothing written")
     p.add_argument("--spice", action="store_true",
                    help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
     p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")

@@ -77,7 +77,7 @@ def template() -> str:
 
     lines = ["# handbook design specification: every key at its default (SI units).",
              "# Feed it back unchanged and it designs the notes' own examples; change what differs for your board.",
-             "# python -m handbook design SPEC.toml [--json] [--bom bom.csv] [--spice]", ""]
+             "# python -m handbook design SPEC.toml [--json] [--bom bom.csv] [--netlist DIR] [--spice]", ""]
     for table, params in TABLES.items():
         lines.append(f"[{table}]")
         for p in params:

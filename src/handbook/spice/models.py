@@ -78,7 +78,7 @@ LM358 = {
 }
 
 
-def lm358(name: str = "LM358", stuck: str = "low") -> list[str]:
+def lm358(name: str = "LM358", stuck: str = "low", values: dict | None = None) -> list[str]:
     """A `.subckt` of one LM358 amplifier: pins ``inp inn vcc vee out``, instance parameters ``vos`` (input
     offset, V: the output switches where V+ - V- = vos), ``ibp`` and ``ibn`` (bias current out of each input
     into the circuit, A; negative for a current into the pin).
@@ -89,6 +89,10 @@ def lm358(name: str = "LM358", stuck: str = "low") -> list[str]:
     drives the output to one rail (``stuck`` = "low" or "high"), so a simulation shows the comparison lost
     instead of a plausible answer. Which way a real LM358 goes is not specified: the choice is an
     assumption, made so that the failure is visible. The change-over takes 1 mV below the limit.
+
+    ``values`` ({"vos", "ibp", "ibn"}) writes those figures into the subcircuit instead of taking them as
+    instance parameters: a plain ``.subckt`` line without ngspice's ``params:`` and no brace expressions, which
+    other SPICEs read too (the exported netlists, :mod:`handbook.spice.netlist`).
     """
     if stuck not in ("low", "high"):
         raise ValueError(f"stuck = {stuck!r}: 'low' or 'high'")
@@ -98,14 +102,20 @@ def lm358(name: str = "LM358", stuck: str = "low") -> list[str]:
     drive = -0.01 if stuck == "low" else 0.01  # V of apparent input while out of range
     hi, lo = f"(v(vcc,vee)-{m['v_oh_drop']:g})", f"{m['v_ol']:g}"
     ok = "v(ok,vee)"
+    if values is None:
+        head = f".subckt {name} inp inn vcc vee out params: vos=0 ibp={m['bias']:g} ibn={m['bias']:g}"
+        vos, ibp, ibn = "vos", "{ibp}", "{ibn}"
+    else:  # the figures written in: a plain subcircuit
+        head = f".subckt {name} inp inn vcc vee out"
+        vos, ibp, ibn = (f"{values[k]:.6g}" for k in ("vos", "ibp", "ibn"))
     return [
         f"* LM358, behavioural: offset vos, bias ib (500 nA max, TI SLOS068), common-mode limit V_CC - "
         f"{m['cm_headroom']:g} V (LM358 datasheet); A0, GBW and output swing assumed",
-        f".subckt {name} inp inn vcc vee out params: vos=0 ibp={m['bias']:g} ibn={m['bias']:g}",
-        "Ibp vcc inp {ibp}",
-        "Ibn vcc inn {ibn}",
-        f"Bok ok vee V=max(min((min(v(vcc,inp),v(vcc,inn))-{m['cm_headroom']:g})/1m+1,1),0)",
-        f"Bgm vee x I={m['a0'] / rx:g}*({ok}*(v(inp,inn)-vos)+(1-{ok})*({drive:g}))",
+        head,
+        f"Ibp vcc inp {ibp}",
+        f"Ibn vcc inn {ibn}",
+        f"Bok ok vee V=max(min((min(v(vcc,inp),v(vcc,inn))-{m['cm_headroom']:g})/1e-3+1,1),0)",
+        f"Bgm vee x I={m['a0'] / rx:g}*({ok}*(v(inp,inn)-({vos}))+(1-{ok})*({drive:g}))",
         f"Rx x vee {rx:g}",
         f"Cx x vee {cx:.6g}",
         f"Bcl x vee I=10*(max(v(x,vee)-{hi},0)+min(v(x,vee)-{lo},0))",

@@ -298,7 +298,7 @@ def watchdog(p: dict | None = None) -> Circuit:
     t_s, _ = note.cap_ti_waveform(q["cap_ti"], q, stalled=True)
     t_r, _ = note.cap_ti_waveform(q["cap_ti"], q, stalled=False)
     t_emf = t_s[3] + t_r[2]  # the EMF recovers in the second cycle where the equation's ramp turns over
-    charge = "(v(ti)<v_wdlow ? i_fast : i_wd)"
+    charge = "(i_wd+(i_fast-i_wd)*(v(ti)<v_wdlow))"  # a comparison is 1 or 0 (no ternary: other SPICEs read it)
     dt = min(t_s[3] / 4000, t_s[1] / 40)  # the fast step needs a step well below its 18 us
     lines = ["* CAP-TI watchdog (TDA5144, AN94002 2.1.3)", *element_lines(parts, {"C6": "C6 ti 0"}),
              "* comparator with hysteresis: q = 1 (discharge) from V_WDHIGH down to V_START",

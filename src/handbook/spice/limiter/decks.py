@@ -159,10 +159,11 @@ OPAMP_NODES = {"VS": "vs{s} 0", "R7": "vs{s} cs{s}", "R9": "vs{s} a{s}", "R10": 
                "IM": _ramp_nodes("csm")}
 
 
-def opamp_block(p: dict, sfx: str = "") -> tuple[list[str], list[str]]:
-    """(models, elements) of one op-amp limiter, node names ending in ``sfx`` (the LM358 subcircuit is shared)."""
+def opamp_block(p: dict, sfx: str = "", nodes: dict = OPAMP_NODES) -> tuple[list[str], list[str]]:
+    """(models, elements) of one op-amp limiter, node names ending in ``sfx`` (the LM358 subcircuit is shared);
+    ``nodes``: where each part sits (:data:`OPAMP_NODES`, or a variant of it)."""
     u1 = {k: f"{p[k]:.6g}" for k in ("vos", "ibp", "ibn")}
-    lines = element_lines(opamp_parts(p), OPAMP_NODES, sfx, **u1)
+    lines = element_lines(opamp_parts(p), nodes, sfx, **u1)
     lines += [f"VAM{sfx} cs{sfx} csm{sfx} 0", _probe(f"cs{sfx}", f"v(vs{sfx})-v(cs{sfx})"),
               _probe(f"hp{sfx}", f"v(vs{sfx})-v(inp{sfx})"), _probe(f"hm{sfx}", f"v(vs{sfx})-v(inn{sfx})")]
     return models.bzx79_c8v2(f"DZ{sfx}", p["zener_voltage"]), lines
