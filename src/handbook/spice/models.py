@@ -120,7 +120,8 @@ def lm358(name: str = "LM358", stuck: str = "low") -> list[str]:
 #: BD434: AN94002 2.2 names the part and asks for at least 1 V across R7 and T1 for linear control;
 #: no BD434 datasheet figure is used for it. Every value below is an assumption, of the order that public
 #: BD433-BD438 datasheets print (h_FE at least 85 at 0.5 A and 50 at 2 A, V_CE(sat) up to 0.5 V at 2 A).
-BD434 = {"bf": 85.0, "is": 1e-12, "vaf": 50.0, "ikf": 3.0, "rb": 2.0, "re": 0.05, "rc": 0.1}
+BD434 = {"bf": 85.0, "is": 1e-12, "vaf": 50.0, "ikf": 3.0, "rb": 2.0, "re": 0.05, "rc": 0.1, "cje": 200e-12,
+         "cjc": 100e-12, "tf": 20e-9}
 
 
 def bd434(name: str = "BD434", **figures) -> list[str]:
@@ -134,7 +135,7 @@ def bd434(name: str = "BD434", **figures) -> list[str]:
     return [f"* BD434 PNP: assumed figures, not from a datasheet (BF {m['bf']:g}: h_FE of the order of the "
             "BD43x datasheets at 0.5 A)",
             f".model {name} PNP(IS={m['is']:g} BF={m['bf']:g} NF=1 VAF={m['vaf']:g} IKF={m['ikf']:g} BR=5 RB={m['rb']:g} "
-            f"RE={m['re']:g} RC={m['rc']:g} CJE=200p CJC=100p TF=20n)"]
+            f"RE={m['re']:g} RC={m['rc']:g} CJE={m['cje']:g} CJC={m['cjc']:g} TF={m['tf']:g})"]
 
 
 def bd434_hfe(i_c: float, v_cb: float = 0.0, **figures) -> float:
