@@ -49,22 +49,32 @@ WIRINGS = ("book", "series")
 
 def defaults() -> dict:
     """The speed loop's parameters (:func:`.speed.defaults`) and the loop's own: the wiring, R1/C8 fitted or
-    not, the motor's windings (registry), the OTA's pole, V_in at the middle of its control range, no
+    not, the motor's windings (registry), the OTA's pole, V_in (None: the middle of its control range), no
     capacitor on V_mot, and the AC sweep."""
     p = note.params()
-    lo, hi = note.v_in_range(p)
     return {**speed.defaults(), "wiring": "book", "rc": True, "r_winding": p["winding_resistance"],
-            "l_winding": p["winding_inductance"], "ota_pole": OTA_POLE, "v_in": (lo + hi) / 2, "c_mot": 0.0,
+            "l_winding": p["winding_inductance"], "ota_pole": OTA_POLE, "v_in": None, "c_mot": 0.0,
             "f_start": 10.0, "f_stop": 1e9, "points": 100}
 
 
+def operating_v_in(q: dict) -> float:
+    """V_in of the operating point: ``q["v_in"]``, or the middle of eq 10's control range for ``q``'s supply and
+    divider."""
+    if q["v_in"] is not None:
+        return q["v_in"]
+    lo, hi = note.v_in_range({**note.params(), **{k: q[k] for k in ("v_supply", "supply_tolerance", "v_drop_min",
+                                                                     "r3", "r4", "v_mot_min")}})
+    return (lo + hi) / 2
+
+
 def netlist(q: dict, analysis: list[str]) -> str:
-    """The loop about its operating point at V_in = ``q["v_in"]``, broken at AMPIN+ (VINJ), with
+    """The loop about its operating point at V_in = :func:`operating_v_in`, broken at AMPIN+ (VINJ), with
     ``analysis`` (the .ac line and any control block) at the end."""
     if q["wiring"] not in WIRINGS:
         raise ValueError(f"wiring {q['wiring']!r}: one of {', '.join(WIRINGS)}")
     v_s = q["v_supply"] * (1 - q["supply_tolerance"])
-    v_mot = speed.v_mot_loop(q["v_in"], q)
+    v_in = operating_v_in(q)
+    v_mot = speed.v_mot_loop(v_in, q)
     emf = v_mot * (1 - q["r_winding"] / q["r_motor"])  # the DC current is V_mot / R_M, as the DC chapter's load
     c_pole = 1 / (2 * math.pi * 1e3 * q["ota_pole"])
     base_drive = (["R2 vs base {:.6g}".format(q["r2"]), "* AMP OUT is the base"] if q["wiring"] == "book"
@@ -74,7 +84,7 @@ def netlist(q: dict, analysis: list[str]) -> str:
              *models.bd434(**q["t1"]), f"VS vs 0 {v_s:.6g}", "QT1 vmot base vs BD434", *base_drive,
              f"R3 vmot inp {q['r3']:.6g}", f"R4 inp 0 {q['r4']:.6g}",
              f"RW vmot nw {q['r_winding']:.6g}", f"LW nw ne {q['l_winding']:.6g}", f"VEMF ne 0 {emf:.6g}",
-             f"VIN inm 0 {q['v_in']:.6g}", "VINJ inx inp DC 0 AC 1",
+             f"VIN inm 0 {v_in:.6g}", "VINJ inx inp DC 0 AC 1",
              "* the OTA: g_m (AMPIN- - AMPIN+) through one pole (assumed), sunk from AMP OUT, 0 .. I_SINK, to V_SAT",
              "GP 0 pn inm inx 1m", "RP pn 0 1k", f"CP pn 0 {c_pole:.6g}",
              f"BOTA {ao} 0 I = min(max({q['gm']:g}*v(pn),0),{q['i_sink']:g})"

@@ -42,7 +42,7 @@ def defaults() -> dict:
     return {**speed.defaults(), **decks.opamp_defaults(), "supply_tolerance": 0.0, "r5": decks.BOARD["R5"],
             "r15": decks.BOARD["R15"], "c10": 0.0, "ota_pole": speed_loop.OTA_POLE, "c_mot": decks.BOARD["C2"],
             "r_winding": p["winding_resistance"], "l_winding": p["winding_inductance"], "t_step": 1e-3,
-            "t_stall": 4e-3, "t_stop": 10e-3, "step": 2e-6}
+            "t_stop": 10e-3, "step": 2e-6}
 
 
 def netlist(q: dict, emf: str, v_in: str, tail: list[str]) -> str:
@@ -68,7 +68,7 @@ def netlist(q: dict, emf: str, v_in: str, tail: list[str]) -> str:
 def _run(q: dict, emf: str, v_in: str) -> dict[str, np.ndarray]:
     with tempfile.TemporaryDirectory(prefix="handbook-limtr-") as tmp:
         out = Path(tmp) / "w.txt"
-        deck = netlist(q, emf, v_in, [f".tran {q['step']:g} {q['t_stop']:g} 0 {q['step']:g} uic",
+        deck = netlist(q, emf, v_in, [f".tran {q['step']:g} {q['t_stop']:g} 0 {q['step']:g}",
                                       ".control", "run", "linearize",
                                       "let vr7 = v(vs)-v(cs)",
                                       f"wrdata {out} i(VEMF) v(vmot) v(out) v(base) vr7", "quit 0", ".endc"])
@@ -109,7 +109,7 @@ def startup(p: dict | None = None) -> dict:
 
 def stall(p: dict | None = None, i_run: float | None = None) -> dict:
     """A running motor that stalls: V_in at the top of its range from the start, a back-EMF that holds the
-    current at ``i_run`` (default half the limit) while running, falling to 0 in 1 us at ``t_stall``. As
+    current at ``i_run`` (default half the limit) while running, falling to 0 in 1 us at ``t_step``. As
     :func:`startup`."""
     q = {**defaults(), **(p or {})}
     _, hi = an94002.v_in_range({**an94002.params(), **{k: q[k] for k in ("r3", "r4")}})
@@ -118,6 +118,6 @@ def stall(p: dict | None = None, i_run: float | None = None) -> dict:
     k = (q["r3"] + q["r4"]) / q["r4"]
     v_mot = speed.v_mot_loop(hi, {**q, "r_motor": k * hi / i_run})  # the loop's V_mot at that load (DC analysis)
     emf = v_mot - i_run * q["r_winding"]
-    t1 = q["t_stall"]
+    t1 = q["t_step"]
     w = _run(q, f"PWL(0 {emf:.6g} {t1:g} {emf:.6g} {t1 + 1e-6:g} 0)", f"{hi:.6g}")
     return {**w, "limit": limit, "v_in": hi, "i_run": i_run, **response(w, t1, limit)}
