@@ -64,6 +64,20 @@ def test_overshoot_lies_between_the_op_amps_delay_and_a_lossless_lc_swing(start)
     assert i_lim + d_i <= start["peak"] <= i_lim + swing
 
 
+def test_the_lm358_integrates_before_t2_acts(start):
+    """Past the limit the LM358's input difference grows as A R7 S t; its one pole integrates that at 2 pi GBW, so its
+    output has fallen dV below its high clamp after sqrt(2 dV / (2 pi GBW A R7 S)): 1 V (T2 still off) takes about
+    46 us. A ten times faster LM358 (the simulation's GBW only) does it in 12 us and fails this check."""
+    i_lim = eq13_limit()
+    slope = (V_TOP / P["winding_resistance"] - i_lim) / TAU
+    a = Q["r13"] / (Q["r12"] + Q["r13"])
+    t_over = Q["t_step"] + start["t_over"]
+    high = Q["v_supply"] - models.LM358["v_oh_drop"]
+    k = np.nonzero((start["t"] > t_over) & (start["out"] < high - 1.0))[0][0]
+    t_fall = np.interp(high - 1.0, start["out"][k:k - 2:-1], start["t"][k:k - 2:-1]) - t_over
+    assert t_fall == pytest.approx(math.sqrt(2 * 1.0 / (2 * math.pi * models.LM358["gbw"] * a * Q["r7"] * slope)), rel=0.1)
+
+
 @pytest.mark.parametrize("c_mot", [None, 22e-6], ids=["C2", "22uF"])
 def test_the_ring_is_the_windings_lc_and_decays_at_r_over_2l(ngspice, c_mot):
     """After the peak T1 is a current source: C_mot and the winding ring at 1 / (2 pi sqrt(L C)) and the ring decays
