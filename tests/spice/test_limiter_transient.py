@@ -124,3 +124,16 @@ def test_c10_across_t2_lets_the_start_up_current_through(ngspice):
     t_on = r["t_over"] + tau * math.log(v_th / (v_th - models.BC557_VBE[1]))
     assert r["peak"] > 1.8 * eq13_limit()
     assert t_on < r["settling"] < 3 * t_on
+
+
+def test_the_trip_follows_the_zeners_drift(ngspice):
+    """D1 drifting by the note's 6.2 mV/K is the deck's only temperature coefficient, and eq 13 makes V_cs
+    proportional to V_D1: at 25 +- 25 C (the note's range) the trip moves by 6.2 mV/K x 25 K / 8.2 V = +-1.9 %, inside
+    the note's "additional tolerance of +-2 %" (AN94002 2.4). Without the drift (tc 0) it does not move at all."""
+    trips = transient.trip_temperatures(temps=(0.0, 25.0, 50.0))
+    for t in (0.0, 50.0):
+        shift = P["zener_tc"] * (t - 25) / Q["zener_voltage"]
+        assert trips[t] / trips[25.0] - 1 == pytest.approx(shift, rel=0.05)
+        assert abs(trips[t] / trips[25.0] - 1) < 0.02
+    flat = transient.trip_temperatures({"zener_tc": 0.0}, temps=(0.0, 50.0))
+    assert flat[0.0] == pytest.approx(flat[50.0], rel=1e-3)

@@ -121,3 +121,19 @@ def stall(p: dict | None = None, i_run: float | None = None) -> dict:
     t1 = q["t_step"]
     w = _run(q, f"PWL(0 {emf:.6g} {t1:g} {emf:.6g} {t1 + 1e-6:g} 0)", f"{hi:.6g}")
     return {**w, "limit": limit, "v_in": hi, "i_run": i_run, **response(w, t1, limit)}
+
+
+def trip_temperatures(p: dict | None = None, temps: tuple | None = None) -> dict:
+    """The nominal op-amp limiter's trip current (the slow ramp of :func:`.decks.opamp`) at ``temps`` (default the
+    registry's low end, 25 C and its high end), D1 drifting by the note's 6.2 mV/K (``zener_tc``, AN94002 2.4). Only
+    D1 has a temperature coefficient in the deck (the LM358 model and the resistors have none), so the trip follows
+    V_D1 (eq 13). {temperature (C): trip current (A)}."""
+    reg = an94002.params()
+    q = {**decks.opamp_defaults(), "zener_tc": reg["zener_tc"], **(p or {})}
+    temps = temps or (reg["t_low"], 25.0, reg["t_high"])
+    deck = decks._opamp_deck("AN94002 figure 3, temperature", [q])
+    out = {}
+    for t in temps:
+        res = run(deck.replace(".options temp=25 tnom=25", f".options temp={t:g} tnom=25"))
+        out[float(t)] = res["i_trip"]
+    return out
