@@ -8,7 +8,7 @@ V_S (its emitter); T2's collector feeds T1's base (AMP OUT), so when it conducts
 OTA sinks and T1 turns down, as T2 does in the one-transistor limiter (AN94002 2.3). With the LM358's output
 high (V_S - 1.5 V) R5/R15 hold T2's V_EB at 1.5 V x R5 / (R5 + R15) = 0.31 V (off); T2 turns on once the output
 has fallen to about V_S - V_EB (R5 + R15) / R5 = V_S - 3 V. C10 (10 uF, O2) is left out unless ``c10`` is set, then
-across R5 (T2's base-emitter, as C9 would sit in the one-transistor option): a 8 ms filter that lets the start-up
+across R5 (T2's base-emitter, as C9 would sit in the one-transistor option): an 8 ms filter that lets the start-up
 current through before the limiter acts.
 
 The rest: the speed loop of :mod:`..speed_loop` in the book's wiring (R2 pulling T1's base up, R1/C8 from AMP
