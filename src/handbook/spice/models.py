@@ -20,7 +20,8 @@ BZX79_C8V2_IZT = 5e-3  # A: the test current of V_Z (BZX79 datasheet)
 BZX79_C8V2_RZ = 15.0  # ohm: dynamic resistance, datasheet maximum "below 15 ohm" (BZX79 datasheet)
 
 
-def bzx79_c8v2(name: str = "BZX79C8V2", v_z: float = BZX79_C8V2_VZ[1], r_z: float = BZX79_C8V2_RZ) -> list[str]:
+def bzx79_c8v2(name: str = "BZX79C8V2", v_z: float = BZX79_C8V2_VZ[1], r_z: float = BZX79_C8V2_RZ,
+               tc: float = 0.0) -> list[str]:
     """`.model` of a BZX79-C8V2 whose breakdown is ``v_z`` at the 5 mA test current.
 
     ngspice's diode conducts IBV at V = BV in breakdown, plus I RS: with IBV = 5 mA the voltage at 5 mA is
@@ -28,14 +29,17 @@ def bzx79_c8v2(name: str = "BZX79C8V2", v_z: float = BZX79_C8V2_VZ[1], r_z: floa
     25 C); RS is chosen so that the two add up to ``r_z`` (default the datasheet's 15 ohm maximum: the
     worst case for how far V_Z moves with the current the dividers draw). Pass ``v_z`` = 7.7 or 8.7
     (:data:`BZX79_C8V2_VZ`) or any tolerance corner. The temperature coefficient (+0.03 to +0.08 %/K,
-    BZX79 datasheet) is not modelled: the circuits here fold the drift into ``v_z``.
+    BZX79 datasheet) is modelled only when ``tc`` (V/K) is given: then BV moves by ``tc`` per kelvin from 25 C
+    (ngspice's TCV, in V/K with the opposite sign: BV(T) = BV - TCV (T - TNOM)); by default the circuits fold the
+    drift into ``v_z``.
     """
     rs = r_z - K_Q * T25 / BZX79_C8V2_IZT
     if rs <= 0 or v_z <= 0:
         raise ValueError(f"zener model: r_z = {r_z:g} ohm must exceed {K_Q * T25 / BZX79_C8V2_IZT:.3g} ohm, v_z > 0")
     bv = v_z - BZX79_C8V2_IZT * rs
     return [f"* BZX79-C8V2: V_Z = {v_z:.6g} V at 5 mA, r_z = {r_z:g} ohm (BZX79 datasheet: 7.7..8.7 V, < 15 ohm)",
-            f".model {name} D(BV={bv:.6g} IBV={BZX79_C8V2_IZT:g} RS={rs:.6g} IS=1e-14 TNOM=25)"]
+            f".model {name} D(BV={bv:.6g} IBV={BZX79_C8V2_IZT:g} RS={rs:.6g} IS=1e-14 TNOM=25"
+            + (f" TCV={-tc:.6g})" if tc else ")")]
 
 
 # ----------------------------------------------------------------------------------------------
@@ -130,7 +134,8 @@ def lm358(name: str = "LM358", stuck: str = "low", values: dict | None = None) -
 #: BD434: AN94002 2.2 names the part and asks for at least 1 V across R7 and T1 for linear control;
 #: no BD434 datasheet figure is used for it. Every value below is an assumption, of the order that public
 #: BD433-BD438 datasheets print (h_FE at least 85 at 0.5 A and 50 at 2 A, V_CE(sat) up to 0.5 V at 2 A).
-BD434 = {"bf": 85.0, "is": 1e-12, "vaf": 50.0, "ikf": 3.0, "rb": 2.0, "re": 0.05, "rc": 0.1}
+BD434 = {"bf": 85.0, "is": 1e-12, "vaf": 50.0, "ikf": 3.0, "rb": 2.0, "re": 0.05, "rc": 0.1, "cje": 200e-12,
+         "cjc": 100e-12, "tf": 20e-9}
 
 
 def bd434(name: str = "BD434", **figures) -> list[str]:
@@ -144,7 +149,7 @@ def bd434(name: str = "BD434", **figures) -> list[str]:
     return [f"* BD434 PNP: assumed figures, not from a datasheet (BF {m['bf']:g}: h_FE of the order of the "
             "BD43x datasheets at 0.5 A)",
             f".model {name} PNP(IS={m['is']:g} BF={m['bf']:g} NF=1 VAF={m['vaf']:g} IKF={m['ikf']:g} BR=5 RB={m['rb']:g} "
-            f"RE={m['re']:g} RC={m['rc']:g} CJE=200p CJC=100p TF=20n)"]
+            f"RE={m['re']:g} RC={m['rc']:g} CJE={m['cje']:g} CJC={m['cjc']:g} TF={m['tf']:g})"]
 
 
 def bd434_hfe(i_c: float, v_cb: float = 0.0, **figures) -> float:

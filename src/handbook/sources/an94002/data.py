@@ -68,6 +68,11 @@ PARAMETERS = (
           low=0.0, high=20.0, cite=TDA5144),
     Param(name="v_p_min", default=10.8, unit="V", meaning="lowest V_P (from the same 12 V +- 10 % supply)",
           low=0.1, high=100.0, cite=ASSUMED),
+    Param(name="winding_resistance", default=4.0, unit="ohm", meaning="motor winding resistance, the two windings "
+          "in series the outputs drive (the note gives no motor data; a stall current above the limiters' 1 A)",
+          low=0.01, high=1e4, cite=ASSUMED),
+    Param(name="winding_inductance", default=2e-3, unit="H", meaning="motor winding inductance, the same two windings "
+          "(the note gives no motor data)", low=1e-7, high=10.0, cite=ASSUMED),
     # 2.3 one-transistor limiter
     Param(name="v_be", default=0.8, unit="V", meaning="V_be at which T2 turns on (the note's figure)",
           low=0.1, high=2.0),

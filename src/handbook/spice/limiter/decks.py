@@ -166,7 +166,7 @@ def opamp_block(p: dict, sfx: str = "", nodes: dict = OPAMP_NODES) -> tuple[list
     lines = element_lines(opamp_parts(p), nodes, sfx, **u1)
     lines += [f"VAM{sfx} cs{sfx} csm{sfx} 0", _probe(f"cs{sfx}", f"v(vs{sfx})-v(cs{sfx})"),
               _probe(f"hp{sfx}", f"v(vs{sfx})-v(inp{sfx})"), _probe(f"hm{sfx}", f"v(vs{sfx})-v(inn{sfx})")]
-    return models.bzx79_c8v2(f"DZ{sfx}", p["zener_voltage"]), lines
+    return models.bzx79_c8v2(f"DZ{sfx}", p["zener_voltage"], tc=p.get("zener_tc", 0.0)), lines
 
 
 def _mid(p: dict) -> float:
