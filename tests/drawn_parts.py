@@ -34,7 +34,7 @@ def bare(ref: str) -> str:
 
 def parse_value(text: str):
     """A drawn value back to SI ("775 mΩ" -> 0.775, "±20 V" -> 20.0, "BC557" -> "BC557"), or None."""
-    text = text.strip().lstrip("±")
+    text = re.sub(r"\s*\([^()]*\)$", "", text.strip()).lstrip("±")  # "2.4 V (I_CH stops)": what it does, said
     if "= " in text:  # "V_CE(sat) = 500 mV"
         text = text.rsplit("= ", 1)[1]
     m = NUMBER.match(text)

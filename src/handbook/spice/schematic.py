@@ -65,8 +65,9 @@ def amplifier(d, at, theta: float = 0, anchor: str = "center", text: str = "", t
               flip: bool = False, stub: float = 1.4):
     """An op-amp, comparator or OTA: schemdraw's triangle without its drawn signs (they would turn with the
     symbol), the signs as upright text ("−" at ``in1``, "+" at ``in2``: the inputs of schemdraw's Opamp),
-    ``text`` at ``text_at`` (its left edge; a drawing point), and its supply pins: ``positive`` (a rail's name) at ``vd``, ``negative`` ("ground", a
-    rail's name, or None for none drawn) at ``vs``. ``flip`` swaps the inputs (+ at ``in1``) so that the
+    ``text`` at ``text_at`` (its left edge; a drawing point), and its supply pins: ``positive`` (a rail's name)
+    on the upper one (or the right one, the symbol turned), ``negative`` ("ground", a rail's name, or None for
+    none drawn) on the other. ``flip`` swaps the inputs (+ at ``in1``) so that the
     inverting input can face either way; ``stub``: the supply pins' length. Returns the Opamp element."""
     import schemdraw.elements as elm
     from schemdraw.elements.opamp import oa_back, oa_xlen
@@ -80,11 +81,11 @@ def amplifier(d, at, theta: float = 0, anchor: str = "center", text: str = "", t
         d.add(elm.Label().at(_local(op, lead + 0.4, y)).label(sign, fontsize=fontsize))
     if text:
         d.add(elm.Label().at(text_at).label(text, halign="left", fontsize=fontsize))
-    for anchor_, sign, rail in (("vd", 1, positive), ("vs", -1, negative)):
+    pins = sorted(((getattr(op, name), axis(op, sign * up)) for name, sign in (("vd", 1), ("vs", -1))),
+                  key=lambda pa: (-round(pa[1][1], 6), -round(pa[1][0], 6)))  # the upper (or right) pin first
+    for (pin, a), rail in zip(pins, (positive, negative)):  # the positive rail on the upper pin
         if rail is None:
             continue
-        pin = getattr(op, anchor_)
-        a = axis(op, sign * up)
         end = (pin[0] + stub * a[0], pin[1] + stub * a[1])
         d.add(elm.Line().endpoints(pin, end))
         if rail == "ground":
