@@ -14,7 +14,7 @@ import pytest
 
 PREFIX = {"p": 1e-12, "n": 1e-9, "µ": 1e-6, "μ": 1e-6, "u": 1e-6, "m": 1e-3, "": 1.0, "k": 1e3, "M": 1e6, "G": 1e9}
 UNITS = ("Ω", "ohm", "V", "A", "F", "H", "S", "Hz")
-REF = re.compile(r"^[A-Z][A-Z0-9_]*$")  # a designator: R7, C_BYP, I_ST, VO1
+REF = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")  # a designator: R7, C_BYP, I_ST, VO1 (g_m read as GM)
 DEVICE = re.compile(r"^[A-Z0-9][A-Z0-9-]*$")  # a device name: BC557, BZX79-C8V2
 NUMBER = re.compile(r"^([-+]?\d+(?:\.\d*)?(?:e[-+]?\d+)?)\s*(\S*)$")
 COPY = re.compile(r"_\d+$")  # a copy of a part in the same deck: R7_1 (another temperature, another supply)
@@ -28,8 +28,9 @@ def drawn_labels(drawing) -> list[str]:
 
 
 def bare(ref: str) -> str:
-    """A designator as compared: a typeset subscript and a written underscore read the same (V_CC2, VCC2)."""
-    return ref.replace("_", "")
+    """A designator as compared: a typeset subscript and a written underscore read the same (V_CC2, VCC2; the
+    transconductance g_m, GM)."""
+    return ref.replace("_", "").upper()
 
 
 def parse_value(text: str):

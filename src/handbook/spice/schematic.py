@@ -15,8 +15,7 @@ from ..core.units import eng
 #: a part's unit as the drawing shows it
 UNITS = {"ohm": "Ω", "Ohm": "Ω"}
 #: designators that name a quantity with a subscript, though written without an underscore
-SUBSCRIPTED = {"VCC2": ("V", "CC2"), "VS": ("V", "s"), "VC2": ("V", "C2"), "VO1": ("V", "O1"), "VO2": ("V", "O2"),
-               "GM": ("g", "m")}
+SUBSCRIPTED = {"VCC2": ("V", "CC2"), "VS": ("V", "s"), "VC2": ("V", "C2"), "GM": ("g", "m")}
 
 
 def typeset(name: str) -> str:

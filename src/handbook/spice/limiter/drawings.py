@@ -110,7 +110,7 @@ def one_transistor(parts):
     d = _start()
     top, y_cs = 11.0, 6.0
     _supply_and_sense(d, elm, by, top, 3.0, y_cs, 3.0)
-    q = d.add(elm.BjtPnp(circle=True).anchor("base").at((6.5, y_cs)).label(label(by["T2"]), loc="right"))
+    q = d.add(elm.BjtPnp(circle=True).theta(0).anchor("base").at((6.5, y_cs)).label(label(by["T2"]), loc="right"))
     d.add(elm.Line().endpoints((3.0, y_cs), q.base))
     d.add(elm.Line().endpoints(q.emitter, (q.emitter[0], top)))
     d.add(elm.Line().endpoints((3.0, top), (q.emitter[0], top)))
