@@ -138,9 +138,10 @@ def _name(element) -> str:
     return f"{type(element).__name__}" + (f" '{labels[0]}'" if labels else "")
 
 
-def faults(drawing) -> list[str]:
-    """What an engineer would reject in the rendered drawing, one line each (empty: none)."""
-    ax, renderer = render(drawing)
+def faults(drawing, rendered=None) -> list[str]:
+    """What an engineer would reject in the rendered drawing, one line each (empty: none). ``rendered``: the
+    (axes, renderer) of :func:`render`, if already drawn."""
+    ax, renderer = rendered or render(drawing)
     to_px = ax.transData.transform
     found = []
     tx = texts(ax, renderer)
@@ -220,12 +221,54 @@ def dangling(drawing) -> list[tuple[object, str]]:
     return out
 
 
-def amplifier_signs(drawing) -> list[dict]:
+#: text an engineer would not accept: ASCII units, and names with their subscripts as raw text
+ASCII_UNITS = re.compile(r"\d\s*[kMmµu]?ohms?\b|\bohm\b|\d\s*u[FAHVWs]\b|\bkohm\b", re.IGNORECASE)
+RAW_SUBSCRIPT = re.compile(r"\b[A-Za-z]+_[A-Za-z0-9(]|\b[VI]\d+\([A-Z]\)")
+
+
+def style_faults(strings) -> list[str]:
+    """Texts with ASCII units ("680 ohm", "10 uF") or a raw subscript ("V_CE(sat)", "V12(H)") outside mathtext."""
+    out = []
+    for text in strings:
+        outside = re.sub(r"\$[^$]*\$", " ", str(text))  # mathtext is typeset: only the rest is read as raw
+        if ASCII_UNITS.search(outside):
+            out.append(f"{text!r}: units in ASCII")
+        if RAW_SUBSCRIPT.search(outside):
+            out.append(f"{text!r}: a subscript as raw text")
+    return out
+
+
+def net(drawing, point) -> set[tuple[str, str]]:
+    """{(part's first label, pin)} of every part pin on the same net as ``point``: the wires (Line, Dot)
+    that touch it, and the wires that touch those, followed to the end."""
+    wires = [line for el in drawing.elements if type(el).__name__ in ("Line", "Wire") for line in _polylines(el)]
+    reached, frontier, seen = [tuple(map(float, point))], [tuple(map(float, point))], set()
+    while frontier:
+        p = frontier.pop()
+        for k, line in enumerate(wires):
+            if k not in seen and (_on(p, line) or any(_on(q, [p, p]) for q in line)):
+                seen.add(k)
+                frontier += [line[0], line[-1]]
+                reached += [line[0], line[-1]]
+    lines = [wires[k] for k in seen] or [[tuple(map(float, point))] * 2]
+    out = set()
+    for el in drawing.elements:
+        if type(el).__name__ in WIRING:
+            continue
+        name = plain(el._userlabels[0].label).split()[0] if getattr(el, "_userlabels", None) else type(el).__name__
+        for pin, at in _pins(el).items():
+            if any(_on(at, line) for line in lines):
+                out.add((name, pin))
+    return out
+
+
+def amplifier_signs(drawing, rendered=None) -> list[dict]:
     """For every op-amp symbol: whether schemdraw drew its own signs (strokes that turn with it), and the
-    upright "+" and "−" texts nearest its two inputs: [{"strokes": bool, "in1": sign or None, "in2": ...}]."""
+    upright "+" and "−" texts nearest its two inputs: [{"strokes": bool, "in1": sign or None, "in2": ...,
+    "element": the Opamp}]."""
     from schemdraw.elements.opamp import Opamp
 
-    ax, renderer = render(drawing)
+    ax, renderer = rendered or render(drawing)
     to_data = ax.transData.inverted().transform
     signs = [(t, to_data(((box[0] + box[2]) / 2, (box[1] + box[3]) / 2))) for t, box, artist in texts(ax, renderer)
              if t.strip() in ("+", "−", "-") and artist.get_rotation() == 0]
@@ -233,7 +276,7 @@ def amplifier_signs(drawing) -> list[dict]:
     for el in drawing.elements:
         if not isinstance(el, Opamp):
             continue
-        row = {"strokes": bool(el.params.get("sign", True))}
+        row = {"strokes": bool(el.params.get("sign", True)), "element": el}
         for pin in ("in1", "in2"):
             at = np.asarray(getattr(el, pin), dtype=float)
             near = [(float(np.hypot(*(at - centre))), t.strip()) for t, centre in signs]
