@@ -187,11 +187,31 @@ def cmd_design(args) -> int:
             print(f"bom: nothing designed, {args.bom} not written", file=sys.stderr)
         out["bom"] = {"rows": rows, "units": bom.UNITS, "left_out": left,
                       "not_asked": [t for t in specmod.TABLES if t not in asked]}
+    if args.schematic:  # the tables the spec asked for that designed, as --bom decides
+        code = _schematics(args, spec, designed, failed, out)
+        if code:
+            return code
     if args.json:
         print(json.dumps({**out, **specmod.traced(spec)}, indent=1, default=float))
     else:
         _print_designs(out, failed, spec.asked)
     return 3 if failed else 0
+
+
+def _schematics(args, spec, designed: dict, failed: dict, out: dict) -> int:
+    """--schematic DIR: one SVG per designed table the spec asked for (all or none written); 0, or 2 on a
+    folder that cannot be written."""
+    from .spice import designed as drawings
+
+    tables = {t: r for t, r in designed.items() if t in spec.asked}
+    for t in (t for t in spec.asked if t in failed):
+        print(f"schematic: [{t}] left out: it cannot be met (above)", file=sys.stderr)
+    try:
+        paths = drawings.write_svgs(tables, args.schematic) if tables else []
+    except OSError as exc:
+        return _design_error(args, 2, f"cannot write the schematics to {args.schematic}: {exc.strerror or exc}")
+    out["schematic"] = {"folder": str(args.schematic), "files": [str(p) for p in paths]}
+    return 0
 
 
 def _print_designs(out: dict, failed: dict, asked: tuple = ()) -> None:
@@ -335,6 +355,9 @@ def main(argv=None) -> int:
     p.add_argument("--bom", metavar="FILE.csv",
                    help="also write a bill of materials (CSV; the same rows in --json): the tables the spec wrote (all "
                    "four if none), each part with its rating; a table that cannot be met is left out and named")
+    p.add_argument("--schematic", metavar="DIR",
+                   help="also draw each designed circuit with its chosen values, one SVG per table in DIR (made if "
+                   "missing): the tables the spec wrote (all four if none), as --bom")
     p.add_argument("--spice", action="store_true",
                    help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
     p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")
