@@ -106,6 +106,11 @@ def body(element) -> tuple[float, float, float, float] | None:
     return (min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes), max(b[3] for b in boxes))
 
 
+def _box(points) -> tuple[float, float, float, float]:
+    xs, ys = zip(*points)
+    return min(xs), min(ys), max(xs), max(ys)
+
+
 def _overlap(a, b, tol: float) -> bool:
     return min(a[2], b[2]) - max(a[0], b[0]) > tol and min(a[3], b[3]) - max(a[1], b[1]) > tol
 
@@ -149,13 +154,15 @@ def faults(drawing, rendered=None) -> list[str]:
         for b, box_b, _ in tx[i + 1:]:
             if _overlap(box_a, box_b, PX):
                 found.append(f"text {plain(a)!r} overlaps text {plain(b)!r}")
-    strokes = []  # (pixel points, owner)
+    strokes = []  # (pixel points, their box, owner)
     for el in drawing.elements:
         for line in _polylines(el):
-            strokes.append(([tuple(to_px(p)) for p in line], el))
+            pts = [tuple(to_px(p)) for p in line]
+            strokes.append((pts, _box(pts), el))
     for text, box, _ in tx:
         inner = _shrink(box, PX)
-        hit = {_name(el) for pts, el in strokes if any(_crosses(p, q, inner) for p, q in zip(pts, pts[1:]))}
+        hit = {_name(el) for pts, around, el in strokes
+               if _overlap(around, inner, -1e-9) and any(_crosses(p, q, inner) for p, q in zip(pts, pts[1:]))}
         found += [f"text {plain(text)!r} lies on {who}" for who in sorted(hit)]
     bodies = [(body(el), el) for el in drawing.elements]
     bodies = [(b, el) for b, el in bodies if b is not None]
@@ -193,12 +200,13 @@ def _on(point, line, tol: float = 1e-3) -> bool:
 def _crowded(drawing, bodies) -> list[str]:
     """A wire that runs through, or within CLEAR of, a part's body it is not connected to."""
     out = []
+    lines = [(other, line, _box(line)) for other in drawing.elements for line in _polylines(other)]
     for box, el in bodies:
         grown, pins = _shrink(box, -CLEAR), list(_pins(el).values()) + [tuple(map(float, p)) for p in el.absanchors.values()]
         for other in drawing.elements:
             if other is el:
                 continue
-            for line in _polylines(other):
+            for line in (line for o, line, around in lines if o is other and _overlap(around, grown, -1e-9)):
                 if any(_near(line[0], p) or _near(line[-1], p) for p in pins):
                     continue  # wired to this part
                 if any(_crosses(a, b, grown) for a, b in zip(line, line[1:])):

@@ -110,11 +110,13 @@ def _designs() -> dict:
     return specmod.run_each(specmod.parse({}))
 
 
-#: what each designed drawing must carry: {table: {designator as read back: the result's attribute}}
+#: what each designed drawing must carry: {table: {designator as read back: the result's attribute, or a key of
+#: its spec}}
 CARRIED = {"commutation": {"C3": "cap_cd", "C4": "cap_dc"},
-           "current_limiter": {"R7": "r7", "R9": "r9", "R10": "r10", "R11": "r11", "R12": "r12", "R13": "r13"},
-           "class_d": {"L1": "l_out", "L2": "l_out", "CBYP": "c_out"},
-           "converter": {"L1": "l1_nominal", "R1": "r1_part"}}
+           "current_limiter": {"R7": "r7", "R9": "r9", "R10": "r10", "R11": "r11", "R12": "r12", "R13": "r13",
+                               "R14": "r14"},
+           "class_d": {"L1": "l_out", "L2": "l_out", "CBYP": "c_out", "RL": "spec:r_load", "VO1": "spec:supply"},
+           "converter": {"L1": "l1_nominal", "R1": "r1_part", "VCC2": "spec:v_supply_min", "U1": "spec:v12h"}}
 
 
 @pytest.mark.parametrize("table", sorted(CARRIED))
@@ -126,4 +128,14 @@ def test_each_designed_drawing_is_clean_and_carries_the_design(table):
     assert faults(d) == []
     on = drawn_parts(d)
     for ref, attr in CARRIED[table].items():
-        assert on[ref] == pytest.approx(getattr(result, attr), rel=1e-3), ref
+        want = result.spec[attr[5:]] if attr.startswith("spec:") else getattr(result, attr)
+        assert on[ref] == pytest.approx(want, rel=1e-3), ref
+
+
+def test_the_converter_is_drawn_at_the_specs_operating_point_not_the_chapters():
+    from handbook.design import spec as specmod
+    from handbook.spice import designed
+
+    result = specmod.run_each(specmod.parse({"converter": {"v_supply_min": 9.0, "v12h": 0.45}}))["converter"]
+    on = drawn_parts(designed.drawing("converter", result))
+    assert (on["VCC2"], on["U1"]) == (pytest.approx(9.0), pytest.approx(0.45))  # the chapter's are 8 V, 400 mV

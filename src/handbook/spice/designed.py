@@ -8,8 +8,9 @@ it (the same circuits :data:`.checks.DESIGN_CHECKS` simulates):
   parts list's 750 Ω where the design has none: a network designed alone) and D1 named as the BOM names it;
 * ``class_d``: the LM4652 bridge and its filter (:func:`.class_d.circuit`) with the chosen L and C_BYP, the
   spec's load and supply, at the designed switching frequency;
-* ``converter``: the TCA5600 power stage (:func:`.converter.circuit`) with the coil as wound (L1 nominal) and R1
-  as bought (the series value), the BOM's two values.
+* ``converter``: the TCA5600 power stage (:func:`.converter.circuit`) at the spec's operating point (its lowest
+  VCC2, V_CE(sat), V_F, V12(H) and output) with the coil as wound (L1 nominal) and R1 as bought (the series
+  value), the BOM's two values.
 
 :func:`write_svgs` writes them, one SVG per table, all or none.
 """
@@ -58,9 +59,11 @@ def _class_d(result):
 
 
 def _converter(result):
+    from ..design.converter import source_params
     from . import converter
 
-    return converter.circuit({**converter.defaults(), "l1": result.l1_nominal, "r1": result.r1_part})
+    return converter.circuit({**converter.defaults(), **source_params(result.spec), "l1": result.l1_nominal,
+                              "r1": result.r1_part})
 
 
 #: design table -> the function taking that design's result, returning the circuit it designs
