@@ -14,19 +14,28 @@ import pytest
 
 PREFIX = {"p": 1e-12, "n": 1e-9, "µ": 1e-6, "μ": 1e-6, "u": 1e-6, "m": 1e-3, "": 1.0, "k": 1e3, "M": 1e6, "G": 1e9}
 UNITS = ("Ω", "ohm", "V", "A", "F", "H", "S", "Hz")
-REF = re.compile(r"^[A-Z][A-Z0-9_]*$")  # a designator: R7, C_BYP, I_ST, VO1
+REF = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")  # a designator: R7, C_BYP, I_ST, VO1 (g_m read as GM)
 DEVICE = re.compile(r"^[A-Z0-9][A-Z0-9-]*$")  # a device name: BC557, BZX79-C8V2
 NUMBER = re.compile(r"^([-+]?\d+(?:\.\d*)?(?:e[-+]?\d+)?)\s*(\S*)$")
 COPY = re.compile(r"_\d+$")  # a copy of a part in the same deck: R7_1 (another temperature, another supply)
 
 
 def drawn_labels(drawing) -> list[str]:
-    return [lbl.label for element in drawing.elements for lbl in element._userlabels]
+    """Every label of the drawing as read: mathtext undone ("$C_\\mathrm{BYP}$ 5 µF" -> "C_BYP 5 µF")."""
+    from drawn_layout import plain
+
+    return [plain(lbl.label) for element in drawing.elements for lbl in element._userlabels]
+
+
+def bare(ref: str) -> str:
+    """A designator as compared: a typeset subscript and a written underscore read the same (V_CC2, VCC2; the
+    transconductance g_m, GM)."""
+    return ref.replace("_", "").upper()
 
 
 def parse_value(text: str):
     """A drawn value back to SI ("775 mΩ" -> 0.775, "±20 V" -> 20.0, "BC557" -> "BC557"), or None."""
-    text = text.strip().lstrip("±")
+    text = re.sub(r"\s*\([^()]*\)$", "", text.strip()).lstrip("±")  # "2.4 V (I_CH stops)": what it does, said
     if "= " in text:  # "V_CE(sat) = 500 mV"
         text = text.rsplit("= ", 1)[1]
     m = NUMBER.match(text)
@@ -41,8 +50,14 @@ def parse_value(text: str):
 
 
 def drawn_parts(drawing) -> dict[str, float | str]:
-    """{designator: value} of every part the drawing labels: "REF value" on one line of a label, or "REF"
-    then its value on the next (the limiters' style). A designator drawn twice with two values is an error."""
+    """{designator (:func:`bare`): value} of every part the drawing labels: "REF value" on one line of a
+    label, or "REF" then its value on the next (the limiters' style). A designator drawn twice with two values
+    is an error."""
+    return parts_in(drawn_labels(drawing))
+
+
+def parts_in(labels: list[str]) -> dict[str, float | str]:
+    """{designator (:func:`bare`): value} read from label texts (see :func:`drawn_parts`)."""
     out: dict[str, float | str] = {}
 
     def put(ref, value):
@@ -50,14 +65,14 @@ def drawn_parts(drawing) -> dict[str, float | str]:
             raise AssertionError(f"{ref} drawn twice: {out[ref]!r} and {value!r}")
         out[ref] = value
 
-    for label in drawn_labels(drawing):
+    for label in labels:
         lines = [ln.strip() for ln in str(label).split("\n")]
         for k, line in enumerate(lines):
             head, _, rest = line.partition(" ")
             if REF.match(head) and rest and parse_value(rest) is not None:
-                put(head, parse_value(rest))
+                put(bare(head), parse_value(rest))
             elif REF.match(line) and k + 1 < len(lines) and parse_value(lines[k + 1]) is not None:
-                put(line, parse_value(lines[k + 1]))
+                put(bare(line), parse_value(lines[k + 1]))
     return out
 
 
@@ -121,13 +136,15 @@ def assert_same_parts(circuit, aux: dict[str, str] = None, copies: dict[str, obj
     parts = {p.ref: p.value for p in circuit.parts}
 
     drawn = drawn_parts(circuit.draw())
-    assert set(drawn) == set(parts), (f"{circuit.id}: drawn but not a part {sorted(set(drawn) - set(parts))}, "
-                                      f"a part not drawn {sorted(set(parts) - set(drawn))}")
+    want = {bare(ref) for ref in parts}
+    assert set(drawn) == want, (f"{circuit.id}: drawn but not a part {sorted(set(drawn) - want)}, "
+                                f"a part not drawn {sorted(want - set(drawn))}")
     for ref, value in parts.items():
+        got = drawn[bare(ref)]
         if isinstance(value, str):
-            assert drawn[ref] == value, f"{circuit.id}: {ref} drawn as {drawn[ref]!r}, is {value!r}"
+            assert got == value, f"{circuit.id}: {ref} drawn as {got!r}, is {value!r}"
         else:
-            assert drawn[ref] == pytest.approx(value, rel=rel), f"{circuit.id}: {ref} drawn as {drawn[ref]}, is {value}"
+            assert got == pytest.approx(value, rel=rel), f"{circuit.id}: {ref} drawn as {got}, is {value}"
 
     elements, params = netlist_elements(circuit.netlist)
     owner = {}  # element name -> the part it is (or a copy of)

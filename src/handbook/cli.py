@@ -171,7 +171,7 @@ def cmd_design(args) -> int:
                     print(f"warning: --spice: [{table}] {warning}", file=sys.stderr)
         except (spice.SpiceUnavailable, spice.SpiceError) as exc:
             return _design_error(args, 4, f"--spice: {exc}")
-    for option, write in (("bom", _write_bom), ("netlist", _write_netlists)):
+    for option, write in (("bom", _write_bom), ("netlist", _write_netlists), ("schematic", _schematics)):
         if getattr(args, option):  # the tables the spec asked for that designed; what was left out is said
             code = write(args, spec, designed, failed, out)
             if code:
@@ -231,6 +231,22 @@ def _write_netlists(args, spec, designed: dict, failed: dict, out: dict) -> int:
         print(f"netlist: nothing designed, {folder} not written", file=sys.stderr)
     out["netlist"] = {"folder": str(folder), "files": list(texts), "left_out": left,
                       "not_asked": [t for t in TABLES if t not in asked]}
+    return 0
+
+
+def _schematics(args, spec, designed: dict, failed: dict, out: dict) -> int:
+    """--schematic DIR: one SVG per designed table the spec asked for (all or none written); 0, or 2 on a
+    folder that cannot be written."""
+    from .spice import designed as drawings
+
+    tables = {t: r for t, r in designed.items() if t in spec.asked}
+    for t in (t for t in spec.asked if t in failed):
+        print(f"schematic: [{t}] left out: it cannot be met (above)", file=sys.stderr)
+    try:
+        paths = drawings.write_svgs(tables, args.schematic) if tables else []
+    except OSError as exc:
+        return _design_error(args, 2, f"cannot write the schematics to {args.schematic}: {exc.strerror or exc}")
+    out["schematic"] = {"folder": str(args.schematic), "files": [str(p) for p in paths]}
     return 0
 
 
@@ -383,6 +399,9 @@ def main(argv=None) -> int:
                    "spec's SHA-256 and every part, one analysis and .meas lines giving the design's figures; no "
                    "ngspice-only syntax, every model in the file. A table that cannot be met is not written and "
                    "named; an unwritable DIR exits 2 with nothing written")
+    p.add_argument("--schematic", metavar="DIR",
+                   help="also draw each designed circuit with its chosen values, one SVG per table in DIR (made if "
+                   "missing): the tables the spec wrote (all four if none), as --bom")
     p.add_argument("--spice", action="store_true",
                    help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
     p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")

@@ -27,6 +27,7 @@ from ..core.units import eng
 from ..design.class_d import model
 from ..sources import lm4651
 from ..sources.lm4651 import circuit as eqs
+from . import schematic
 from .circuit import Check, Circuit, Part, rebuildable, with_defaults
 from .runner import run
 
@@ -55,9 +56,10 @@ def parts(p: dict) -> tuple[Part, ...]:
 
 
 def label(part: Part) -> str:
-    """A part as the drawing shows it: designator and value with its unit (a half-bridge: +-V_s)."""
-    value = eng(part.value, part.unit).replace("ohm", "Ω")
-    return f"{part.ref} ±{value}" if part.ref.startswith("VO") else f"{part.ref} {value}"
+    """A part as the drawing shows it: designator (subscripts typeset) and value with its unit (a half-bridge:
+    ±V_s)."""
+    text = schematic.label(part)
+    return text.replace(" ", " ±", 1) if part.ref.startswith("VO") else text
 
 
 def _pulse(p: dict, v1: float, first: float, second: float) -> str:

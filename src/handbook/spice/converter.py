@@ -27,6 +27,7 @@ import numpy as np
 
 from ..core.units import eng
 from ..sources import tca5600
+from . import schematic
 from .circuit import Check, Circuit, Part, rebuildable, with_defaults
 from .runner import run
 
@@ -51,12 +52,14 @@ def parts(p: dict) -> tuple[Part, ...]:
             Part("VC2", p["v_out2"] + p["regulator_drop"], "V", "C2 at the regulator's input, V_out2 + V(9-8)"))
 
 
-def label(part: Part) -> str:
+def by_ref(ps: tuple[Part, ...], ref: str) -> Part:
+    return next(q for q in ps if q.ref == ref)
+
+
+def label(part: Part, sep: str = " ") -> str:
     """A part as the drawing shows it: designator, and value with its unit (what the value is, where it is
-    a device's figure)."""
-    value = eng(part.value, part.unit).replace("ohm", "Ω")
-    what = {"S1": "V_CE(sat) = ", "U1": "V12(H) = ", "D1": "V_F = "}.get(part.ref, "")
-    return f"{part.ref} {what}{value}"
+    a device's figure), subscripts typeset."""
+    return schematic.label(part, sep, what={"S1": "V_CE(sat)", "U1": "V12(H)", "D1": "V_F"}.get(part.ref, ""))
 
 
 def diode_is(v_f: float, i_at: float) -> float:
@@ -199,31 +202,37 @@ def waveform(p: dict | None = None, points: int = 241) -> dict:
 
 
 def draw(ps: tuple[Part, ...]):
-    """VCC2, L1, the switch S1 with R1 under it and the comparator U1, D1 into C2; labelled from the parts."""
-    import schemdraw
+    """VCC2, L1, the switch S1 with R1 under it, D1 into C2 (held at V_out2 + V(9-8): the source VC2, as in the
+    deck); the comparator U1 with R1's drop on its − input and its V12(H) reference on +, fed from VCC2 and
+    ground, opening S1 (dashed: its control). Labelled from the parts."""
     import schemdraw.elements as elm
 
-    schemdraw.use("matplotlib")
     lab = {q.ref: label(q) for q in ps}
-    with schemdraw.Drawing(show=False) as d:
-        d.config(fontsize=11)
-        vcc = elm.SourceV().up(5).label(lab["VCC2"], loc="bottom")
-        elm.Ground().at(vcc.start)
-        elm.Inductor2().at(vcc.end).right(6).label(lab["L1"])
-        sw = elm.Dot()
-        d1 = elm.Diode().right(7).label(lab["D1"])
-        vc2 = elm.SourceV().at(d1.end).down(5).reverse().label(lab["VC2"], loc="bottom")
-        elm.Ground().at(vc2.end)
-        s1 = elm.Switch().at(sw.center).down(3).label(lab["S1"], loc="top")
-        e = elm.Dot()
-        r1 = elm.Resistor().down(2).label(lab["R1"], loc="bottom")
-        elm.Ground().at(r1.end)
-        u1 = elm.Opamp(leads=True).left().anchor("out").at((s1.center[0] + 1.2, s1.center[1]))
-        elm.Line().at(u1.out).left(1.2 - 0.3).linestyle("--")
-        elm.Line().at(e.center).right(u1.in1[0] - e.center[0] + 0.4)
-        elm.Line().toy(u1.in1)
-        elm.Line().left(0.4)
-        elm.Label().at((u1.center[0] + 0.6, e.center[1] - 0.5)).label(lab["U1"])
-        elm.Line().at(u1.in2).right(0.4)
-        elm.Label().label("V12(H)", loc="right")
+    d = schematic.start(unit=3.0, fontsize=10)
+    top, e, x_sw, x_ref, x_out = 8.5, 1.6, 5.0, 11.6, 15.0
+    d.add(elm.SourceV().endpoints((0, -1), (0, top)).label(lab["VCC2"], loc="top"))
+    d.add(elm.Inductor2().endpoints((0, top), (x_sw, top)).label(lab["L1"]))
+    d.add(elm.Diode().endpoints((x_sw, top), (x_out, top)).label(lab["D1"]))
+    d.add(elm.SourceV().endpoints((x_out, -1), (x_out, top)).label(lab["VC2"] + "\n(C2, held)", loc="bottom"))
+    s1 = d.add(elm.Switch().endpoints((x_sw, top), (x_sw, e)).label(lab["S1"], loc="top"))
+    d.add(elm.Resistor().endpoints((x_sw, e), (x_sw, -1)).label(lab["R1"], loc="top"))
+    for x in (0, x_sw, x_out, x_ref):
+        d.add(elm.Ground().at((x, -1)))
+    d.add(elm.Dot().at((x_sw, top)))
+    d.add(elm.Dot().at((x_sw, e)))
+    # U1 points left, its output at S1's control: − (below) from R1's top, + (above) from the V12(H) reference
+    u1 = schematic.amplifier(d, (x_sw + 1.6, s1.center[1]), theta=180, anchor="out", positive=schematic.typeset("VCC2"),
+                             text=label(by_ref(ps, "U1"), sep="\n"), text_at=(x_sw + 0.4, e + 0.95))
+    edge = s1.get_bbox(transform=True).xmax
+    d.add(elm.Line().endpoints(u1.out, (edge + CONTROL_GAP, u1.out[1])).linestyle("--"))
+    bend = u1.in1[0] + 0.6
+    d.add(elm.Line().endpoints((x_sw, e), (bend, e)))
+    d.add(elm.Line().endpoints((bend, e), (bend, u1.in1[1])))
+    d.add(elm.Line().endpoints((bend, u1.in1[1]), u1.in1))
+    d.add(elm.Line().endpoints(u1.in2, (x_ref, u1.in2[1])))
+    d.add(elm.Battery().endpoints((x_ref, -1), (x_ref, 1.0)).label(schematic.typeset("V12(H)"), loc="bottom"))
+    d.add(elm.Line().endpoints((x_ref, 1.0), (x_ref, u1.in2[1])))
     return d
+
+
+CONTROL_GAP = 0.35  # the dashed control line stops this short of the switch's symbol

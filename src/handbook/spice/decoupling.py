@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from ..sources import an94002 as note
+from . import schematic
 from .circuit import Check, Circuit, Part, rebuildable
 from .runner import run
 from .timers import element_lines, label
@@ -92,23 +93,29 @@ def sweep(p: dict | None = None, points: int = 41) -> dict:
                                                                                            ("l_max", "c"))}}
 
 
+def _branch(d, elm, x: float, top: float, node: str, parts: list):
+    """One branch as the deck has it: a 1 A AC current source from ground into ``node`` (so |V| reads |Z|),
+    the node, and ``parts`` ((element, label)) in series from the node down to ground."""
+    d.add(elm.SourceI().endpoints((x, 0), (x, top)).label("1 A AC", loc="top", fontsize=9))
+    d.add(elm.Ground().at((x, 0)))
+    d.add(elm.Line().endpoints((x, top), (x + 2.5, top)))
+    d.add(elm.Dot().at((x + 2.5, top)).label(node, loc="top", fontsize=9))
+    step = top / len(parts)
+    for k, (kind, text) in enumerate(parts):
+        d.add(kind().endpoints((x + 2.5, top - k * step), (x + 2.5, top - (k + 1) * step)).label(text, loc="bottom"))
+    d.add(elm.Ground().at((x + 2.5, 0)))
+
+
 def draw(parts):
-    import schemdraw
+    """Three branches, each driven by its own 1 A AC source as in the deck: C2 as a real part (ESR, ESL, C2 in
+    series, at the V_P pin), the smallest ideal capacitor C_MIN and the largest inductance L_MAX that meet
+    the note's 2 Ω at 2 MHz."""
     import schemdraw.elements as elm
 
-    schemdraw.use("matplotlib")
     by = {p.ref: label(p) for p in parts}
-    d = schemdraw.Drawing(show=False)
-    d.config(fontsize=10, unit=2.2)
-    d.add(elm.Dot(open=True).at((0, 6.6)).label("V_P pin", loc="top"))
-    d.add(elm.Resistor().down().label(by["ESR"]))
-    d.add(elm.Inductor2().down().label(by["ESL"]))
-    d.add(elm.Capacitor().down().label(by["C2"]))
-    d.add(elm.Ground())
-    d.add(elm.Label().at((0, -1.2)).label("C2 as a real part", fontsize=9))
-    d.add(elm.Capacitor().at((5, 2.2)).down().label(by["C_MIN"] + "\n(ideal)"))
-    d.add(elm.Ground())
-    d.add(elm.Inductor2().at((9, 2.2)).down().label(by["L_MAX"] + "\n(alone)"))
-    d.add(elm.Ground())
-    d.add(elm.Label().at((7, -1.2)).label("the 2 ohm at 2 MHz requirement, two ways", fontsize=9))
+    d = schematic.start(unit=2.2, fontsize=10)
+    _branch(d, elm, 0.0, 6.6, "$V_\\mathrm{P}$ pin: C2 as a real part",
+            [(elm.Resistor, by["ESR"]), (elm.Inductor2, by["ESL"]), (elm.Capacitor, by["C2"])])
+    _branch(d, elm, 9.0, 6.6, "ideal capacitor", [(elm.Capacitor, by["C_MIN"])])
+    _branch(d, elm, 18.0, 6.6, "inductance alone", [(elm.Inductor2, by["L_MAX"])])
     return d

@@ -35,7 +35,7 @@ from __future__ import annotations
 import math
 
 from ..sources import an94002 as note
-from . import models
+from . import models, schematic
 from .circuit import Check, Circuit, Part, rebuildable, with_defaults
 from .runner import run
 from .timers import BOARD, element_lines, label
@@ -197,43 +197,47 @@ def sweep(p: dict | None = None, points: int = 31) -> dict:
 
 
 def draw(parts):
-    """V_S, T1 from V_S to V_mot, R3/R4 to AMPIN+, the OTA with V_in on AMPIN-, R2, R1 + C8, the motor."""
-    import schemdraw
+    """V_S, T1 from V_S to V_mot, R2 from V_S to its base (AMP OUT), R3/R4 to AMPIN+, the OTA (a current
+    output: it sinks from AMP OUT) with V_in on AMPIN-, fed from V_P and ground, R1 + C8, the motor R_M."""
     import schemdraw.elements as elm
 
-    schemdraw.use("matplotlib")
     by = {p.ref: label(p) for p in parts}
-    d = schemdraw.Drawing(show=False)
-    d.config(fontsize=10, unit=2.5)
-    t1 = d.add(elm.BjtPnp(circle=True).at((4, 4)).anchor("base").label(by["T1"], loc="right"))
-    d.add(elm.SourceV().at((-4.5, 0)).up().to((-4.5, 3)).label(by["V_S"]))
-    d.add(elm.Ground().at((-4.5, 0)))
-    d.add(elm.Line().at((-4.5, 3)).to((-4.5, 6)))
-    d.add(elm.Line().to((t1.emitter.x, 6)))
-    d.add(elm.Line().to(t1.emitter))
-    d.add(elm.Dot().at((3, 6)))
-    d.add(elm.Resistor().at((3, 6)).to((3, 4)).label(by["R2"], loc="bottom"))
-    d.add(elm.Line().at((0.08, 4)).to(t1.base))
-    d.add(elm.Dot().at((3, 4)))
-    vmot = (t1.collector.x, 2.5)
-    d.add(elm.Line().at(t1.collector).to(vmot))
-    d.add(elm.Dot().at(vmot).label("V_mot", loc="left"))
-    d.add(elm.Line().at(vmot).to((8, 2.5)))
-    d.add(elm.Resistor().down().to((8, 0)).label(by["R_M"]))
-    d.add(elm.Ground())
-    d.add(elm.Resistor().at(vmot).down().to((vmot[0], 0)).label(by["R3"]))
-    d.add(elm.Dot())
-    d.add(elm.Resistor().down().label(by["R4"], loc="bottom"))
-    d.add(elm.Ground())
-    ota = d.add(elm.Opamp(leads=True).left().anchor("in2").at((3.5, 0))
-                .label(f"OTA (output AMP OUT)\n{by['GM']}\n{by['I_SINK']}\n{by['V_SAT']}", loc="bottom", fontsize=8))
-    d.add(elm.Line().at(ota.in2).to((vmot[0], 0)).label("AMPIN+", loc="top", fontsize=8))
-    d.add(elm.Line().at(ota.in1).down(1.2))
-    d.add(elm.Dot(open=True).label("AMPIN- = V_in", loc="bottom", fontsize=8))
-    d.add(elm.Line().at(ota.out).to((ota.out.x, 4)))
-    d.add(elm.Dot().at((ota.out.x, 1.5)))
-    d.add(elm.Line().at((ota.out.x, 1.5)).to((-1.8, 1.5)))
-    d.add(elm.Resistor().down().label(by["R1"]))
-    d.add(elm.Capacitor().down().label(by["C8"]))
-    d.add(elm.Ground())
+    d = schematic.start(unit=2.5, fontsize=10)
+    top, base_x, out_y, xd = 11.0, 6.0, 3.0, 13.0
+    d.add(elm.SourceV().endpoints((-2, 0), (-2, top)).label(by["V_S"], loc="top"))
+    d.add(elm.Ground().at((-2, 0)))
+    t1 = d.add(elm.BjtPnp(circle=True).theta(0).anchor("base").at((base_x + 1.5, 8.0)).label(by["T1"], loc="right"))
+    d.add(elm.Line().endpoints((-2, top), (t1.emitter[0], top)))
+    d.add(elm.Line().endpoints(t1.emitter, (t1.emitter[0], top)))
+    d.add(elm.Resistor().endpoints((base_x, top), (base_x, 8.0)).label(by["R2"], loc="top"))
+    d.add(elm.Line().endpoints((base_x, 8.0), t1.base))
+    for pt in ((base_x, top), (base_x, 8.0), (base_x, 5.5)):
+        d.add(elm.Dot().at(pt))
+    vmot = (t1.collector[0], 6.0)
+    d.add(elm.Line().endpoints(t1.collector, vmot))
+    d.add(elm.Line().endpoints(vmot, (xd + 3.5, 6.0)))
+    d.add(elm.Dot().at(vmot).label("$V_\\mathrm{mot}$", loc="bottom"))
+    d.add(elm.Resistor().endpoints((xd + 3.5, 6.0), (xd + 3.5, 0)).label(by["R_M"], loc="bottom"))
+    inp = (xd, out_y + 0.625)
+    d.add(elm.Resistor().endpoints((xd, 6.0), inp).label(by["R3"], loc="bottom"))
+    d.add(elm.Resistor().endpoints(inp, (xd, 0)).label(by["R4"], loc="bottom"))
+    for x in (xd, xd + 3.5):
+        d.add(elm.Dot().at((x, 6.0)) if x == xd else elm.Ground().at((x, 0)))
+    d.add(elm.Ground().at((xd, 0)))
+    d.add(elm.Dot().at(inp))
+    d.add(elm.Line().endpoints(inp, (xd - 1.5, inp[1])))
+    # the OTA points left: AMPIN+ from the divider above, AMPIN- (V_in) below, AMP OUT into T1's base
+    ota = schematic.amplifier(d, (xd - 1.5, inp[1]), theta=180, anchor="in2", positive="$V_\\mathrm{P}$",
+                              text="OTA\n" + "\n".join(by[k] for k in ("GM", "I_SINK", "V_SAT")),
+                              text_at=(base_x + 0.6, 0.9), fontsize=9)
+    d.add(elm.Label().at((inp[0] - 0.6, inp[1] + 0.35)).label("AMPIN+", fontsize=8))
+    d.add(elm.Line().endpoints(ota.in1, (ota.in1[0], ota.in1[1] - 1.0)))
+    d.add(elm.Dot(open=True).at((ota.in1[0], ota.in1[1] - 1.0)).label("AMPIN− = $V_\\mathrm{in}$", loc="bottom",
+                                                                      fontsize=8))
+    d.add(elm.Line().endpoints(ota.out, (base_x, out_y)))
+    d.add(elm.Line().endpoints((base_x, out_y), (base_x, 8.0)).label("pin AMP OUT", loc="bottom", fontsize=8))
+    d.add(elm.Line().endpoints((base_x, 5.5), (3.0, 5.5)))
+    d.add(elm.Resistor().endpoints((3.0, 5.5), (3.0, 3.0)).label(by["R1"], loc="top"))
+    d.add(elm.Capacitor().endpoints((3.0, 3.0), (3.0, 0.5)).label(by["C8"], loc="top"))
+    d.add(elm.Ground().at((3.0, 0.5)))
     return d

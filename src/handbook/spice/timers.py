@@ -16,9 +16,9 @@ the IC's logic is modelled, not copied, and these are the assumptions:
 """
 from __future__ import annotations
 
-from ..core.units import eng
 from ..sources import an94002 as note
 from ..sources.an94002.parts import PARTS
+from . import schematic
 from .circuit import Check, Circuit, Part, rebuildable, with_defaults
 from .runner import run
 
@@ -50,8 +50,8 @@ def element_lines(parts, nodes: dict[str, str]) -> list[str]:
 
 
 def label(part: Part) -> str:
-    """A part as the drawing shows it: designator and value with its unit."""
-    return f"{part.ref} {part.value if isinstance(part.value, str) else eng(part.value, part.unit)}"
+    """A part as the drawing shows it: designator (subscripts typeset) and value with its unit (Ω, µF)."""
+    return schematic.label(part)
 
 
 def _hysteresis(v_low: float, v_high: float) -> str:
@@ -336,36 +336,78 @@ def watchdog(p: dict | None = None) -> Circuit:
 
 
 # ----------------------------------------------------------------------------------------------
-# schematic
+# schematic: what each netlist holds, drawn (mathtext subscripts, see :mod:`.schematic`)
+
+def _line(part, why: str = "") -> str:
+    """One line of a label: designator, value, and what it does in parentheses."""
+    return label(part) + (f" ({why})" if why else "")
+
+
+def _pin(d, elm, x: float, name: str, cap, sources: list[tuple[str, str]], gate: str = ""):
+    """One timer pin at (x, 4): its capacitor to ground, the IC's controlled current source(s) on its left
+    (("up", label) charges the pin, ("down", label) sinks), and a gate source driving them (``gate``: its
+    label; none drawn if empty). Returns the pin's point."""
+    pin = (x, 4.0)
+    d.add(elm.Dot(open=True).at(pin).label(name, loc="right"))
+    d.add(elm.Capacitor().endpoints(pin, (x, 0)).label(label(cap), loc="bottom"))
+    d.add(elm.Ground().at((x, 0)))
+    for k, (way, text) in enumerate(sources):
+        xs = x - 5.0 * (k + 1)
+        d.add(elm.Line().endpoints((xs, 4.0), (xs + 5.0, 4.0)))
+        if k:
+            d.add(elm.Dot().at((xs + 5.0, 4.0)))
+        src = elm.SourceControlledI().endpoints((xs, 0), (xs, 4.0)).label(text, loc="top", fontsize=9)
+        d.add(src if way == "up" else src.reverse())
+        d.add(elm.Ground().at((xs, 0)))
+    if gate:
+        xg = x - 5.0 * (len(sources) + 1)
+        d.add(elm.SourceSquare().endpoints((xg, 0), (xg, 3.0)).label(gate, loc="top", fontsize=9))
+        d.add(elm.Ground().at((xg, 0)))
+        d.add(elm.Dot(open=True).at((xg, 3.0)).label("gate", loc="top", fontsize=9))
+    return pin
+
+
+def _comparator(d, elm, pin, levels: str):
+    """The comparator with hysteresis that turns the source over: + from the pin, − from its reference (the
+    two levels, ``levels``), fed from V_P and ground; its output q is a net the source's label names."""
+    x, y = pin
+    d.add(elm.Line().endpoints(pin, (x, 8.0)))
+    op = schematic.amplifier(d, (x + 3.0, 8.0), anchor="in2", flip=True, positive="$V_\\mathrm{P}$", stub=1.4)
+    d.add(elm.Line().endpoints((x, 8.0), op.in2))
+    xr = x + 1.8
+    d.add(elm.Line().endpoints(op.in1, (xr, op.in1[1])))
+    d.add(elm.Battery().endpoints((xr, 1.0), (xr, op.in1[1])).label(levels, loc="bottom", fontsize=9))
+    d.add(elm.Ground().at((xr, 1.0)))
+    d.add(elm.Line().endpoints(op.out, (op.out[0] + 1.0, op.out[1])))
+    d.add(elm.Dot(open=True).at((op.out[0] + 1.0, op.out[1])).label("q", loc="right"))
+    return op
+
 
 def draw_timer(parts, pin: str):
-    """The IC's sources on the pin (left), the board's capacitor(s) to ground, the comparator levels."""
-    import schemdraw
+    """What the deck holds: the pin's capacitor, the IC's switched current sources (controlled sources: the
+    comparator's q, or the zero-crossing gate, sets their direction), and for CAP-ST and CAP-TI the comparator
+    with hysteresis between its levels; CAP-CD and CAP-DC have no comparator in the deck (their sources stop
+    at the two levels, a clamp)."""
     import schemdraw.elements as elm
 
-    schemdraw.use("matplotlib")
-    caps = [p for p in parts if p.unit == "F"]
-    sources = [p for p in parts if p.unit == "A"]
-    levels = [p for p in parts if p.unit == "V"]
-    d = schemdraw.Drawing(show=False)
-    d.config(fontsize=10, unit=2.5)
-    width = 4.2 * len(sources) + 5.0
-    for i, cap in enumerate(caps):
-        d.move(width * i - d.here[0], -d.here[1])
-        pin_dot = d.add(elm.Dot(open=True).label(pin.split(" / ")[i], loc="bottom"))
-        for j, src in enumerate(sources):
-            d.move_from(pin_dot.center)
-            d.add(elm.Line().left(4.2 * j + 1.0))
-            source = elm.SourceI().down().label(label(src), loc="top", fontsize=9)
-            d.add(source.reverse() if "discharge" not in src.note else source)  # a charge source points up
-            d.add(elm.Ground())
-        d.move_from(pin_dot.center)
-        d.add(elm.Line().right(1.5))
-        d.add(elm.Capacitor().down().label(label(cap), loc="bottom"))
-        d.add(elm.Ground())
-        d.move_from(pin_dot.center)
-        d.add(elm.Line().up(1.2))
-        d.add(elm.Opamp(leads=True).right().anchor("in2").label("comparator\n" + "\n".join(label(v) for v in levels),
-                                                                loc="right", fontsize=9))
+    by = {p.ref: p for p in parts}
+    d = schematic.start(unit=2.5, fontsize=10)
+    if pin == "CAP-ST":
+        at = _pin(d, elm, 0.0, pin, by["C5"], [("up", _line(by["I_ST"]).replace(" ", " ±", 1)
+                                                     + "\n(sinks while q)")])
+        _comparator(d, elm, at, f"{_line(by['V_HIGH'], 'rising')}\n{_line(by['V_LOW'], 'falling')}")
+    elif pin == "CAP-TI":
+        at = _pin(d, elm, 0.0, pin, by["C6"], [("up", "\n".join((
+            _line(by["I_FAST"], "charge up to $V_\\mathrm{WDLOW}$"), _line(by["I_WD"], "charge above"),
+            _line(by["I_TIDIS"], "sink while q or the EMF")))) ])
+        _comparator(d, elm, at, "\n".join((_line(by["V_WDHIGH"], "rising"), _line(by["V_START"], "falling"),
+                                             _line(by["V_WDLOW"], "fast charge below"))))
+    else:
+        for k, (name, cap, gate) in enumerate(zip(pin.split(" / "), ("C3", "C4"), ("VGCD", "VGDC"))):
+            at = _pin(d, elm, 20.0 * k, name, by[cap],
+                      [("down", _line(by["I_DIS"], "gate low")), ("up", _line(by["I_CH"], "gate high"))],
+                      gate=f"{gate}\nzero crossings")
+            stops = (_line(by["V_HIGH"], f"{schematic.typeset('I_CH')} stops"),
+                     _line(by["V_LOW"], f"{schematic.typeset('I_DIS')} stops"))
+            d.add(elm.Label().at((at[0] + 1.2, 5.1)).label("\n".join(stops), halign="left", fontsize=9))
     return d
-

@@ -3,14 +3,11 @@ as their netlists (:mod:`.limiters`): every part is labelled with its designator
 :func:`labels` reads them back for the test that the drawing and the netlist hold the same set."""
 from __future__ import annotations
 
-from ...core.units import eng
-
-UNITS = {"ohm": "Ω", "V": "V", "A": "A"}
+from .. import schematic
 
 
 def label(part) -> str:
-    value = part.value if isinstance(part.value, str) else eng(part.value, UNITS.get(part.unit, part.unit))
-    return f"{part.ref}\n{value}"
+    return schematic.label(part, sep="\n")
 
 
 def labels(drawing) -> dict[str, str]:
@@ -24,10 +21,7 @@ def labels(drawing) -> dict[str, str]:
 
 
 def _start():
-    import schemdraw
-
-    schemdraw.use("matplotlib")
-    return schemdraw.Drawing(show=False, fontsize=10, unit=3)
+    return schematic.start(unit=3, fontsize=10)
 
 
 def _two(d, kind, part, a, b, loc="bottom"):
@@ -39,7 +33,7 @@ def _supply_and_sense(d, elm, by, top: float, x_sense: float, y_cs: float, right
     """V_s from ground to the rail, the rail, R7 from the rail down to the sense point, the motor below it."""
     _two(d, elm.SourceV, by["VS"], (0, 0), (0, top), loc="top")
     d.add(elm.Line().endpoints((0, top), (right, top)))
-    d.add(elm.Label().at((right / 2, top + 0.6)).label("V_s"))
+    d.add(elm.Label().at((right / 2, top + 0.6)).label("$V_\\mathrm{s}$"))
     _two(d, elm.Resistor, by["R7"], (x_sense, top), (x_sense, y_cs), loc="top")
     _two(d, elm.SourceI, by["IM"], (x_sense, y_cs), (x_sense, 0), loc="top")
     d.add(elm.Label().at((x_sense + 1.4, y_cs / 2)).label("motor"))
@@ -49,8 +43,9 @@ def _supply_and_sense(d, elm, by, top: float, x_sense: float, y_cs: float, right
 
 
 def _opamp_down(d, elm, by, inp, inn, x: float, y: float):
-    """U1 pointing down between the two divider columns, inputs on top; the output labelled."""
-    op = d.add(elm.Opamp(leads=True).theta(-90).anchor("center").at((x, y)).label(label(by["U1"]), loc="right"))
+    """U1 pointing down between the two divider columns, inputs on top ("+" on the left, from the sense side),
+    fed from V_s (its V+ pin, right) and ground (its V- pin, left); the output labelled."""
+    op = schematic.amplifier(d, (x, y), theta=-90, text=label(by["U1"]), text_at=(x + 0.4, y - 1.5))
     d.add(elm.Line().endpoints(inp, (op.in2[0], inp[1])))
     d.add(elm.Line().endpoints((op.in2[0], inp[1]), op.in2))
     d.add(elm.Line().endpoints(inn, (op.in1[0], inn[1])))
@@ -70,12 +65,12 @@ def opamp(parts):
     _supply_and_sense(d, elm, by, top, 3.0, y_cs, 18.0)
     inp, inn = (7.0, y_cs), (xr, y_cs)
     _two(d, elm.Resistor, by["R12"], (3.0, y_cs), inp)
-    _two(d, elm.Resistor, by["R13"], inp, (7.0, y_z))
+    _two(d, elm.Resistor, by["R13"], inp, (7.0, y_z), loc="top")
     _two(d, elm.Resistor, by["R9"], (xr, top), (xr, top - 2.5), loc="top")
     _two(d, elm.Resistor, by["R10"], (xr, top - 2.5), inn, loc="top")
     _two(d, elm.Resistor, by["R11"], inn, (xr, y_z), loc="top")
     d.add(elm.Line().endpoints((7.0, y_z), (18.0, y_z)))
-    d.add(elm.Label().at((12.5, y_z - 0.6)).label("V_s − V_D1"))
+    d.add(elm.Label().at((12.5, y_z - 0.6)).label("$V_\\mathrm{s} − V_\\mathrm{D1}$"))
     _two(d, elm.Zener, by["D1"], (18.0, y_z), (18.0, top), loc="bottom")
     _two(d, elm.Resistor, by["R14"], (18.0, y_z), (18.0, 0), loc="bottom")
     d.add(elm.Ground().at((18.0, 0)))
@@ -115,7 +110,7 @@ def one_transistor(parts):
     d = _start()
     top, y_cs = 11.0, 6.0
     _supply_and_sense(d, elm, by, top, 3.0, y_cs, 3.0)
-    q = d.add(elm.BjtPnp(circle=True).anchor("base").at((6.5, y_cs)).label(label(by["T2"]), loc="right"))
+    q = d.add(elm.BjtPnp(circle=True).theta(0).anchor("base").at((6.5, y_cs)).label(label(by["T2"]), loc="right"))
     d.add(elm.Line().endpoints((3.0, y_cs), q.base))
     d.add(elm.Line().endpoints(q.emitter, (q.emitter[0], top)))
     d.add(elm.Line().endpoints((3.0, top), (q.emitter[0], top)))
