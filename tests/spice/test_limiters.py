@@ -147,3 +147,14 @@ def test_the_offset_copy_sees_eq_14_and_a_wrong_signed_offset(ngspice):
     flipped = decks.trip_voltage({**p, "vos": -p["vos"]})
     for wrong in (eq14, flipped, an94002.v_cs_trip(p["zener_voltage"], *net, -p["vos"])):
         assert abs(wrong / row["spice"] - 1) > 5 * row["rtol"], wrong
+
+
+def test_the_corner_deck_is_the_designs_worst_headroom_corner():
+    """The corner deck's headroom (eq 11 with the bias at D1's lowest, R12 low, R13 high) is the design model's
+    worst case over every corner of the note's network: the deck sits where the design says the input range is
+    tightest (the row itself holds eq 11 at the deck's own values, so a reader's network checks too)."""
+    from handbook.spice.limiter import decks
+
+    eq = decks.corner_equations(decks.corner_defaults())
+    # the design's corner also puts half the inputs' 150 nA offset current on V+: 75 nA x R12 || R13, 0.3 mV
+    assert eq["head0"] - eq["design_head"] == pytest.approx(75e-9 * 5544 * 16160 / (5544 + 16160), rel=0.02)

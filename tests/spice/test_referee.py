@@ -28,12 +28,13 @@ def test_every_check_holds_at_twenty_operating_points(ngspice, build):
 
 
 def test_the_points_cover_their_ranges():
-    """Twenty seeded points reach both ends of every range (not twenty copies of one corner)."""
+    """Twenty seeded points reach both ends of every range, each within a twentieth of it (not twenty copies of
+    one corner)."""
     for build, space in referee.SPACES.items():
         pts = referee.draw(build, POINTS)
         for key, (lo, hi) in space.items():
             got = [p[key] for p in pts]
-            assert min(got) < lo + 0.25 * (hi - lo) and max(got) > hi - 0.25 * (hi - lo), (_name(build), key)
+            assert min(got) < lo + (hi - lo) / POINTS and max(got) > hi - (hi - lo) / POINTS, (_name(build), key)
 
 
 @pytest.fixture(scope="module")
@@ -59,14 +60,15 @@ def test_every_fault_is_seen_by_an_independent_check_of_its_circuit(refereed):
 
 def test_every_circuit_has_faults_and_each_fault_reaches_its_equation():
     """A fault whose patch reaches nothing (a function called through another name) would be 'seen' by no
-    row and prove nothing: each must change at least one check's equation column, or remove it."""
+    row and prove nothing: each must change at least one check's equation column (a check it removes or a build
+    it breaks does not count)."""
     for build in checks.BUILDERS:
         c = build()
         assert referee.FAULTS.get(c.id), c.id
         true = {ch.id: float(ch.equation) for ch in c.checks}
         for fault in referee.FAULTS[c.id]:
-            faulty = referee.faulty_equations(c, fault)
-            changed = [k for k, v in true.items() if k not in faulty or not math.isclose(faulty[k], v, rel_tol=1e-9)]
+            faulty = {k: float(ch.equation) for k, ch in referee.faulty_checks(c, fault).items()}
+            changed = [k for k, v in true.items() if k in faulty and not math.isclose(faulty[k], v, rel_tol=1e-9)]
             assert changed, (c.id, fault.label)
 
 
@@ -89,9 +91,10 @@ def test_judge_by_hand():
     assert not judge(c, 1.0, 1.0)["agrees"]  # the expected difference missing is a difference too
 
 
-def test_no_tolerance_exceeds_its_stated_reason():
-    """Every row's reason names its tolerance, and the tolerance is the number it names: a ±x % at the end of
-    the reason equal to rtol (the reason of a tolerance computed per point, the speed loop's, names it)."""
+def test_every_reason_ends_in_the_tolerance_it_justifies():
+    """Every row's reason ends in the tolerance it argues for, equal to rtol: a consistency check of the text (a
+    reason whose number drifted from the code shows), not a proof that the tolerance is tight; that is the
+    mutation test's job above, with the property test holding it from below."""
     import re
 
     for build in checks.BUILDERS:
@@ -102,15 +105,14 @@ def test_no_tolerance_exceeds_its_stated_reason():
 
 
 def test_a_check_too_loose_to_referee_sees_nothing(ngspice):
-    """The mutation test can fail: the op-amp limiter with every tolerance at ±1000 % sees none of its faults but
-    the one whose equation gives no trip at all (A upside down makes eq 13 negative)."""
+    """The mutation test can fail: the op-amp limiter with every tolerance at ±1000 % sees none of its faults."""
     from dataclasses import replace
 
     from handbook.spice import limiter
     from handbook.spice.circuit import measured
 
     c = limiter.opamp()
-    loose = replace(c, checks=tuple(replace(ch, rtol=10.0) for ch in c.checks))
-    got = {f for fs in referee.seen(loose, measured(c)).values() for f in fs}
-    assert got == {"AN94002 eq 13: R12 and R13 swapped (A upside down)"}
+    loose = replace(c, checks=tuple(replace(ch, rtol=10.0) for ch in c.checks),
+                    rebuild=lambda: replace(c.rebuild(), checks=tuple(replace(ch, rtol=10.0) for ch in c.rebuild().checks)))
+    assert not any(referee.seen(loose, measured(c)).values())
     assert any(referee.seen(c, measured(c)).values())

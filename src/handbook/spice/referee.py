@@ -87,6 +87,12 @@ def _f(module, attr, equation, name, **changes):
     return Fault(equation, name, module, attr, lambda fn: _args(fn, **changes))
 
 
+def _alpha(p: dict) -> float:
+    """TCA5600's alpha = V_L+ / V_L- (eq 3), for the faults of eq 4 and 5."""
+    vl_plus, vl_minus = tca5600.coil_voltages(p)
+    return vl_plus / vl_minus
+
+
 _EQ13 = "AN94002 eq 13"
 _EQ11 = "AN94002 eq 11"
 _OPAMP_FAULTS = (
@@ -95,8 +101,9 @@ _OPAMP_FAULTS = (
     Fault(_EQ13, "eq 14 (the matched dividers) in its place", an94002, "v_cs_trip",
           lambda fn: (lambda vz, r9, r10, r11, r12, r13, offset=0.0: an94002.v_cs_matched(vz, r9, r10, r11))),
     Fault(_EQ13, "a factor 2", an94002, "v_cs_trip", _times(2.0)),
-    Fault(_EQ13, "R12 and R13 swapped (A upside down)", an94002, "v_cs_trip",
-          lambda fn: (lambda vz, r9, r10, r11, r12, r13, offset=0.0: fn(vz, r9, r10, r11, r13, r12, offset))),
+    Fault(_EQ13, "the offset referred through B instead of A", an94002, "v_cs_trip",
+          lambda fn: (lambda vz, r9, r10, r11, r12, r13, offset=0.0: fn(vz, r9, r10, r11, r12, r13, offset)
+                      + offset / an94002.factor_a(r12, r13) - offset / an94002.factor_b(r9, r10, r11))),
     Fault(_EQ11, "R12 and R13 swapped", an94002, "level_shift",
           lambda fn: (lambda vz, r12, r13, v_cs=0.0: fn(vz, r13, r12, v_cs))),
     Fault(_EQ11, "a factor 2", an94002, "level_shift", _times(2.0)),
@@ -110,9 +117,10 @@ FAULTS: dict[str, tuple[Fault, ...]] = {
         _f(an94002, "limit_current", "AN94002 2.3 (V_BE drift)", "the drift doubled", v_be_tc=lambda v: 2 * v),
     ),
     "limiter-opamp": _OPAMP_FAULTS,
-    "limiter-opamp-corner": _OPAMP_FAULTS[2:],  # the corner has no offset: the second copy above holds those
+    "limiter-opamp-corner": (_OPAMP_FAULTS[2], _OPAMP_FAULTS[3], *_OPAMP_FAULTS[5:]),  # no offset at the corner
     "limiter-supply": (
-        _f(an93008, "v_cs_trip", "AN93008 eq 6", "the supply term's sign flipped", v_supply=lambda v: -v),
+        Fault("AN93008 eq 6", "the supply's share taken as B / A, not 1 - B / A", an93008, "v_cs_trip",
+              lambda fn: (lambda v, r8, r9, r10, r11, offset=0.0: v - fn(v, r8, r9, r10, r11, offset))),
         Fault("AN93008 eq 6", "R10 and R11 swapped (B upside down)", an93008, "v_cs_trip",
               lambda fn: (lambda v, r8, r9, r10, r11, offset=0.0: fn(v, r8, r9, r11, r10, offset))),
         Fault("AN93008 eq 6", "a factor 2", an93008, "v_cs_trip", _times(2.0)),
@@ -139,8 +147,16 @@ FAULTS: dict[str, tuple[Fault, ...]] = {
               lambda fn: (lambda p: (fn(p)[0], fn(p)[1] + p["v12h"]))),
         Fault("TCA5600 eq 1, 2", "V_F's sign flipped in V_L+", tca5600, "coil_voltages",
               lambda fn: (lambda p: (fn(p)[0] - 2 * p["v_f"], fn(p)[1]))),
+        Fault("TCA5600 eq 1, 2", "V_CE(sat) left out of V_L-", tca5600, "coil_voltages",
+              lambda fn: (lambda p: (fn(p)[0], fn(p)[1] + p["vce_sat"]))),
         Fault("TCA5600 eq 2 to 6a", "a factor 2 in t1", tca5600, "operating_point",
               lambda fn: (lambda l1, r1, p: {**fn(l1, r1, p), "t1": 2 * fn(l1, r1, p)["t1"]})),
+        Fault("TCA5600 eq 4", "t1 (1 + alpha) for t1 (1 + 1/alpha)", tca5600, "operating_point",
+              lambda fn: (lambda l1, r1, p: {**fn(l1, r1, p), "f": fn(l1, r1, p)["f"] * (1 + 1 / _alpha(p))
+                                             / (1 + _alpha(p))})),
+        Fault("TCA5600 eq 5", "1 + 1/alpha for 1 + alpha", tca5600, "operating_point",
+              lambda fn: (lambda l1, r1, p: {**fn(l1, r1, p), "i_out_max": fn(l1, r1, p)["i_out_max"]
+                                             * (1 + _alpha(p)) / (1 + 1 / _alpha(p))})),
     ),
 }
 for _rl in ("4ohm", "8ohm"):
@@ -165,31 +181,35 @@ FAULTS.update({
 })
 
 
-def faulty_equations(circuit: Circuit, fault: Fault) -> dict:
-    """{check id: its equation's value with the fault in place} for ``circuit`` built again
-    (``circuit.rebuild``); a check the faulty build leaves out (its equation gives no trip at all) is missing."""
+def faulty_checks(circuit: Circuit, fault: Fault) -> dict:
+    """{check id: the check as the book would print it with the fault in place}: ``circuit`` built again
+    (``circuit.rebuild``) through the faulty function, so each check's equation column *and* its expected
+    difference are what the faulty code gives (an expected difference that absorbed the equation would hide the
+    fault, and this shows it). A check the faulty build leaves out, or a build the fault breaks, gives none."""
+    from dataclasses import replace
+
     with applied(fault):
         try:
             c = circuit.rebuild()
-        except (ValueError, ArithmeticError):  # the fault makes the equation meaningless
+        except (ValueError, ArithmeticError):
             return {}
-    out = {ch.id: float(ch.equation) for ch in c.checks}
+    out = {ch.id: ch for ch in c.checks}
     for cid, factor in fault.scale:
-        out[cid] *= factor
+        out[cid] = replace(out[cid], equation=out[cid].equation * factor)
     return out
 
 
 def seen(circuit: Circuit, values: dict) -> dict:
     """{check id: [labels of the faults that check sees]} for ``circuit`` with its `.meas` results ``values``: a
-    check sees a fault when the faulty equation misses SPICE by more than the check's tolerance about its
-    expected difference (or gives no figure at all)."""
+    check sees a fault when, built with the fault, it misses SPICE by more than its tolerance about its expected
+    difference. A check the fault removes (its equation gives no figure) or a build it breaks sees nothing: a
+    comparison that was not made proves nothing."""
     out = {ch.id: [] for ch in circuit.checks}
     for fault in FAULTS.get(circuit.id, ()):
-        faulty = faulty_equations(circuit, fault)
-        for ch in circuit.checks:
-            eq = faulty.get(ch.id, float("nan"))
-            if eq != eq or not judge(ch, eq, float(values[ch.measure.lower()]))["agrees"]:
-                out[ch.id].append(fault.label)
+        for cid, ch in faulty_checks(circuit, fault).items():
+            eq = float(ch.equation)
+            if cid in out and (eq != eq or not judge(ch, eq, float(values[ch.measure.lower()]))["agrees"]):
+                out[cid].append(fault.label)
     return out
 
 
@@ -214,17 +234,21 @@ SPACES: dict[Callable, dict] = {
         "v_supply": (10.8, 13.2),  # 12 V +- 10 %
     },
     limiter.opamp: {
-        "v_supply": (11.4, 13.2),  # 12 V, -5 % .. +10 %: below, D1's lowest puts V+ out of the LM358's range
-        "zener_voltage": (8.0, 8.7),  # BZX79-C8V2 from nominal-less-drift to its maximum (datasheet)
+        "v_supply": (10.8, 13.2),  # 12 V +- 10 %
+        "zener_voltage": (7.7, 8.7),  # BZX79-C8V2 minimum to maximum at 5 mA (datasheet)
         "r7": (0.05, 0.2),  # 50 .. 200 mV across R7 at the note's 1 A
         "r9": (200.0, 400.0),  # eq 14's R9 for 70 .. 140 mV
         "r14": (620.0, 820.0),  # D1's feed about the parts list's 750 ohm
         "vos": (-9e-3, 9e-3),  # LM358 offset, over temperature (datasheet)
         "ibp": (0.0, 5e-7), "ibn": (0.0, 5e-7),  # LM358 bias, 0 .. 500 nA (datasheet)
     },
-    limiter.opamp_corner: {
-        "v_supply": (11.8, 12.6),  # about the corner's 12 V: it must start inside 2 V of the supply
+    limiter.opamp_corner: {  # the least-headroom corner: it starts inside the LM358's 2 V and comes back out
+        "v_supply": (10.8, 13.2),  # 12 V +- 10 %
+        # the design's lowest D1 (tolerance and drift, 7.53 V) about, up to the datasheet minimum: below 7.5 V V+
+        # comes back inside the LM358's range only past the trip, and the corner's story (stuck, then back) ends
+        "zener_voltage": (7.5, 7.7),
         "r7": (0.08, 0.15),
+        "r12": (5488.0, 5600.0), "r13": (16000.0, 16320.0),  # R12 low, R13 high, up to 2 %
         "ibp": (1e-7, 5e-7), "ibn": (1e-7, 5e-7),
     },
     limiter.supply_referenced: {
@@ -252,7 +276,10 @@ SPACES: dict[Callable, dict] = {
 
 
 def draw(build: Callable, n: int, seed: int = 22) -> list[dict]:
-    """``n`` seeded operating points of ``build``, uniform inside :data:`SPACES`."""
+    """``n`` seeded operating points of ``build`` inside :data:`SPACES`, a Latin hypercube: each parameter's range
+    cut into ``n`` equal strata, one point in each, the strata shuffled independently per parameter, so every
+    range is covered end to end however many parameters there are."""
     rng = np.random.default_rng(seed)
     space = SPACES[build]
-    return [{k: float(rng.uniform(lo, hi)) for k, (lo, hi) in space.items()} for _ in range(n)]
+    cols = {k: lo + (hi - lo) * (rng.permutation(n) + rng.uniform(size=n)) / n for k, (lo, hi) in space.items()}
+    return [{k: float(cols[k][i]) for k in space} for i in range(n)]

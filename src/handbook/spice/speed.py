@@ -177,11 +177,13 @@ def loop_filter(p: dict | None = None) -> Circuit:
             "step is below 0.01 %): ±0.05 %")
     checks = (
         Check("speed-rc-corner", "frequency where C8 lags AMP OUT by 45 degrees, 1 / (2 pi R1 C8)", "Hz", f_z,
-              "f_rc", 5e-4, f"R1 in series with C8 is the whole path from AMP OUT to C8 in the netlist; {grid}. The "
-              "ratio is independent of T1 and of the OTA, so this checks the branch in the loop, not the loop's "
-              "stability (no criterion in the note, figure 1 lost)"),
+              "f_rc", 5e-4, "by construction: R1 in series with C8 is the whole path from AMP OUT to C8 in the "
+              "netlist, so the ratio of their voltages is that RC divider's whatever T1, the OTA and the loop do (it "
+              "would agree with C8 moved to V_s); it checks the branch as the deck wires it, not the loop's "
+              f"stability, which the loop-gain analysis (handbook.spice.speed_loop) takes up; {grid}", kind="sanity"),
         Check("speed-rc-rolloff", "C8's voltage over AMP OUT's a decade above, 1 / sqrt(1 + 100)", "1",
-              1 / math.sqrt(101), "g_10", 5e-4, f"a first-order low-pass: the same branch; {grid}"))
+              1 / math.sqrt(101), "g_10", 5e-4, f"by construction: a first-order low-pass, the same branch; {grid}",
+              kind="sanity"))
     return Circuit("speed-loop-filter", "Speed-control loop, R1/C8 in AC", "AN94002 2.2 (R1, C8: 'necessary to "
                    "obtain a good stability'); wiring assumed", parts, deck, checks, draw=lambda: draw(parts))
 
