@@ -81,19 +81,25 @@ def response(w: dict, t0: float, i_limit: float) -> dict:
     """Figures of a current waveform ``w`` (from :func:`startup` or :func:`stall`) after ``t0``: the peak and its
     time, the overshoot over ``i_limit`` (A and relative), the final current (mean of the last
     RIPPLE_WINDOW of the run) and its ripple (peak to peak there), the time the current first exceeds
-    ``i_limit`` and the settling time: from ``t0`` until it stays within BAND of the final current."""
+    ``i_limit`` and the settling time: from ``t0`` until it stays within BAND of the final current (None where
+    the run ends before it does, and the first time None where the current never exceeds the limit)."""
     t, i = w["t"], w["i"]
     after = t >= t0
     k = int(np.argmax(np.where(after, i, -np.inf)))
     tail = t >= t[-1] - RIPPLE_WINDOW * (t[-1] - t0)
     final = float(np.mean(i[tail]))
     outside = np.nonzero(after & (np.abs(i - final) > BAND * final))[0]
-    settled = t[outside[-1] + 1] if len(outside) and outside[-1] + 1 < len(t) else t0
+    if not len(outside):
+        settled = t0  # within the band from the start
+    elif outside[-1] + 1 < len(t):
+        settled = t[outside[-1] + 1]
+    else:  # still outside at the end of the run: it has not settled (None, not a settling time of zero)
+        settled = None
     over = np.nonzero(after & (i > i_limit))[0]
     return {"peak": float(i[k]), "t_peak": float(t[k] - t0), "overshoot": float(i[k] - i_limit),
             "overshoot_rel": float(i[k] / i_limit - 1), "final": final,
             "ripple": float(np.ptp(i[tail])), "t_over": float(t[over[0]] - t0) if len(over) else None,
-            "settling": float(settled - t0)}
+            "settling": None if settled is None else float(settled - t0)}
 
 
 def startup(p: dict | None = None) -> dict:
