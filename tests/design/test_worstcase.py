@@ -198,3 +198,31 @@ def test_distributions_and_drift_cite_their_sources(table):
     assert w.distributions and all(d.kind == "uniform" and d.low <= d.high and d.cite for d in w.distributions)
     assert w.drift and all(isinstance(x, str) and x for x in w.drift)
     assert w.binding in {q.key for q in w.quantities}
+
+
+@functools.cache
+def by_yield_design():
+    return limiter.design({"criterion": "yield", "yield_min": 0.9999})
+
+
+def test_a_design_by_yield_meets_yield_min_on_a_fresh_lot_ten_times_larger():
+    """criterion = "yield": the lot the search accepted (seed 1, 100 000 boards) and a fresh one (seed 2, 10x the
+    boards) both meet yield_min; the corners, reported beside it, are what the corners design would refuse."""
+    from handbook.design.limiter import by_yield
+
+    r, corners = by_yield_design(), designed("current_limiter")
+    assert r.mc_yield is not None and 0 < r.box_scale < 1
+    fresh = by_yield.lot_yield(r.r7, r.network, r.spec, n=10 * by_yield.N, seed=2)
+    assert fresh >= r.spec["yield_min"], fresh
+    assert r.r7 < corners.r7  # what the pessimism of the corners cost
+    assert min(r.margin_low, r.margin_high) < r.spec["min_margin"]  # its corners, reported as they are
+    assert any(w.startswith("criterion = yield") for w in r.warnings)
+    assert corners.mc_yield is None and not any(w.startswith("criterion = yield") for w in corners.warnings)
+
+
+def test_the_yield_acceptance_is_an_upper_bound_on_failures():
+    from handbook.design.limiter import by_yield
+
+    n = 100_000
+    assert by_yield.meets(1.0, n, 0.9999) and not by_yield.meets(1 - 10 / n, n, 0.9999)
+    assert not by_yield.meets(1 - 5 / n, n, 0.9999)  # 5 failures in 100 000: the rate may well be above 1e-4

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...sources.an94002 import circuit as an94002
-from ..bom import DIVIDER_TC
+from ..ratings import DIVIDER_TC
 from .engine import Measure, Model, Source
 
 #: no resistor, zener or op-amp datasheet the project cites gives a distribution inside its limits
