@@ -103,9 +103,30 @@ def shrunk(s: dict, k: float):
     return checked_table(TABLE, {**dict(s), **{key: s[key] * k for key in SCALED}, "criterion": "corners"})
 
 
+def attempt(s: dict, k: float) -> tuple[dict, float | None]:
+    """The corner search on the box shrunk by ``k``, and its design's lot yield.
+
+    Parameters
+    ----------
+    s : Mapping
+        The checked ``[current_limiter]`` table, its full tolerances.
+    k : float
+        The factor on every tolerance of :data:`SCALED` (1: the full corners, searched on ``s`` itself).
+
+    Returns
+    -------
+    tuple
+        (:func:`.search.solve`'s dict, the yield of its design's lot by :func:`lot_yield`, None when the search
+        found no network).
+    """
+    found = solve(s if k == 1.0 else shrunk(s, k))
+    return found, None if found["r7"] is None else lot_yield(found["r7"], found["network"], s)
+
+
 def solve_yield(s: dict) -> dict:
     """The search's answer by yield: :func:`.search.solve`'s dict for the smallest accepted box, with "scale" (its
-    k) and "yield" (its lot's yield; None when even the full corners find nothing).
+    k) and "yield" (its lot's yield). The first box tried is the full one, then 3/4, 1/2 and 1/4 of it until one
+    passes; then k is bisected between the smallest that passed and 0.
 
     Parameters
     ----------
@@ -116,16 +137,21 @@ def solve_yield(s: dict) -> dict:
     -------
     dict
         :func:`.search.solve`'s keys ("r7", "network", "evaluated", "tried", "bound", "proven", "unproven") for the
-        design chosen, plus "scale" (float) and "yield" (float or None).
+        design chosen, plus "scale" (float) and "yield" (float; None, with "r7" None, when no box tried passes).
     """
-    best, k_ok, k_bad = solve(s), 1.0, 0.0
-    if best["r7"] is None:
-        return {**best, "scale": 1.0, "yield": None}
-    best_yield = lot_yield(best["r7"], best["network"], s)
+    first = None
+    for k in (1.0, 0.75, 0.5, 0.25):
+        found, y = attempt(s, k)
+        first = first or found
+        if y is not None and meets(y, N, s["yield_min"]):
+            best, best_yield, k_ok = found, y, k
+            break
+    else:
+        return {**first, "scale": 1.0, "yield": None}
+    k_bad = 0.0
     for _ in range(STEPS):
         k = (k_ok + k_bad) / 2
-        found = solve(shrunk(s, k))
-        y = None if found["r7"] is None else lot_yield(found["r7"], found["network"], s)
+        found, y = attempt(s, k)
         if y is not None and meets(y, N, s["yield_min"]):
             k_ok, best, best_yield = k, found, y
         else:

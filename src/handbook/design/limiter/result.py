@@ -97,7 +97,10 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
     Returns
     -------
     LimiterResult
-        The chosen R7 and R9..R13 with their trip currents, margins and headroom at every corner.
+        The chosen R7 and R9..R13 with their trip currents, margins and headroom at every corner. With
+        ``criterion = "yield"`` (:mod:`.by_yield`) the network is the one its Monte Carlo lot accepts, the corner
+        figures are still the full corners' (they may lie inside min_margin, or outside the window), and
+        ``mc_yield`` and ``box_scale`` say what the lot held and which box was searched.
 
     Raises
     ------

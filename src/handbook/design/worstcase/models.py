@@ -61,10 +61,10 @@ def commutation(result) -> Model:
                 Measure("window_fill", "CAP-CD swing at rpm_min, fraction of the board's window", "1", None, 1.0,
                         "window"),
                 Measure("swing_rpm_max", "CAP-CD swing at rpm_max", "V", s["min_excursion"], None, "min_excursion"))
-    tech = "C0G/NP0, 0 +- 30 ppm/K" if c <= 100e-9 else "polypropylene film, -200 ppm/K"
-    drift = (f"CAP-CD ({c * 1e9:.3g} nF) is {tech} (the BOM's timing-capacitor class): over 25 C +- 50 K that is "
-             f"{(30e-6 if c <= 100e-9 else 200e-6) * 50:.2%}, inside tolerance = {s['tolerance']:.0%} only if the "
-             "part is bought with that much less initial tolerance; not in the analysis.",
+    tech, tc = ("C0G/NP0, 0 +- 30 ppm/K", 30e-6) if c <= 100e-9 else ("polypropylene film, -200 ppm/K", 200e-6)
+    drift = (f"CAP-CD ({c * 1e9:.3g} nF) is {tech} (the BOM's timing-capacitor class): {tc * 100:.1%} per 100 K, "
+             f"beside tolerance = {s['tolerance']:.0%}; the spec gives no temperature span for the timers, so it is "
+             "not in the analysis.",
              "The TDA5144's charge current and levels are the datasheet's min and max (June 1994); the project "
              "holds no figure for their temperature drift beyond them.")
     return Model(srcs, measures, f, drift)
@@ -161,11 +161,11 @@ def converter(result) -> Model:
                 Measure("f_sw_vmin", "full-load frequency at v_supply_min", "Hz", s["f_min"], None, "f_min"),
                 Measure("f_sw_low", "lowest full-load frequency over the supply range", "Hz",
                         AUDIO_BAND if avoid else None, None, "audio band" if avoid else ""))
-    drift = ("A_L falls with temperature in most ferrites and the saturation flux density falls too: the design "
-             "takes saturation at t_ambient + the coil's rise (the material's 25 C and 100 C figures); A_L's "
-             f"temperature drift is taken inside a_l_tolerance = {s['a_l_tolerance']:.0%}.",
+    drift = (f"A_L's temperature drift is taken inside a_l_tolerance = {s['a_l_tolerance']:.0%} (the schema's "
+             "assumption for a gap ground to order); the core's saturation, which does drift, is judged by the design "
+             "at t_ambient + the coil's rise (the material's 25 C and 100 C figures, PyOpenMagnetics' database).",
              "R1 (the BOM's metal film, <= 100 ppm/K) drifts 0.5 % over 50 K, half its 1 % tolerance: not in the "
              "analysis.",
-             "V12(H), V_CE(sat) and V_F have no public temperature figures (TCA5600 reading note); V_F falls about "
-             "2 mV/K in any silicon rectifier, inside the assumed spread.")
+             "V12(H), V_CE(sat) and V_F have no public figures, nor temperature coefficients (the TCA5600 chapter's "
+             f"reading note): the assumed +-{DEVICE_SPREAD:.0%} stands for spread and drift together.")
     return Model(srcs, measures, f, drift)
