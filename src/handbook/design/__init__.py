@@ -13,7 +13,8 @@ design re-verified at every tolerance corner.
 
 Shared by all four: :mod:`~handbook.design.schema` (every key's default, unit, range, meaning, and the results
 each design reports), :mod:`~handbook.design.spec` (reads and runs a TOML specification),
-:mod:`~handbook.design.bom` (the bill of materials), :mod:`~handbook.design.common` (a table's checks, the
+:mod:`~handbook.design.bom` (the bill of materials), :mod:`~handbook.design.worstcase` (EVA, RSS and a seeded
+Monte Carlo of any design, its yields and sensitivities), :mod:`~handbook.design.common` (a table's checks, the
 result base class) and
 :mod:`~handbook.design.solvers` (casadi's silent IPOPT, and :class:`~handbook.design.solvers.Infeasible`, which
 a specification nothing can meet raises).

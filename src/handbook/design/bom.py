@@ -165,8 +165,8 @@ def limiter_rows(lim) -> list[dict]:
     return rows
 
 
-#: the divider resistors' temperature coefficient the BOM asks for, 1/K: thin film's usual class
-DIVIDER_TC = 25e-6
+#: the divider resistors' temperature coefficient the BOM asks for, 1/K (:data:`.ratings.DIVIDER_TC`)
+DIVIDER_TC = ratings.DIVIDER_TC
 
 
 def _drift_budget(tolerance: float, span: float) -> str:

@@ -22,6 +22,9 @@ DERATING = 0.5
 KNEE, ZERO = 70.0, 155.0
 #: saturation current of an inductor at least this times its worst-case peak current
 SATURATION_MARGIN = 1.2
+#: the limiter's divider resistors' temperature coefficient the BOM asks for, 1/K: thin film's usual class (the
+#: worst-case analysis states their drift with it)
+DIVIDER_TC = 25e-6
 
 #: resistor power classes, W, and the package class that carries each (surface mount up to 1 W, then leaded)
 RESISTOR_CLASSES = ((0.1, "0603 chip"), (0.125, "0805 chip"), (0.25, "1206 chip"), (0.5, "2010 chip"),

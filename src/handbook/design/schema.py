@@ -97,6 +97,13 @@ def _limiter() -> tuple[Param, ...]:
               cite="AN94002 2.4; LM358 common-mode range to V_CC - 2 V over temperature"),
         Param(name="ic", default="TDA5144", unit="", meaning="motor IC, for its own output limit",
               choices=("TDA5144", "TDA5143")),
+        Param(name="criterion", default="corners", unit="", choices=("corners", "yield"),
+              meaning="'corners': every tolerance corner keeps min_margin inside the window (exact, pessimistic); "
+                      "'yield': the smallest R7 whose Monte Carlo lot (100 000 boards, every part uniform in its "
+                      "tolerance, each at both ends of temp_span) meets yield_min, its corner margins reported beside it"),
+        Param(name="yield_min", default=0.9999, unit="1", low=0.5, high=0.999999,
+              meaning="with criterion = 'yield': least fraction of boards inside the window narrowed by min_margin "
+                      "with input_headroom (a 3-sigma upper bound of the lot's failures)"),
         *_resistor("r7", "E24", 0.01, 10.0, "current-sense resistor R7"),
         *_resistor("r9", "E96", 10.0, 1e6, "reference resistor R9"),
         *_resistor("r10", "E96", 1e3, 1e5, "reference divider R10"),

@@ -7,6 +7,8 @@
 * :mod:`.explain`: what can be met when nothing meets the spec;
 * :mod:`.result`: the result, verified at every corner, and its warnings;
 * :mod:`.analysis`: which tolerance eats the window, and a Monte Carlo lot.
+* :mod:`.by_yield`: ``criterion = "yield"``, the network chosen by its Monte Carlo yield (the corners reported
+  beside it).
 """
 from ..common import explained
 from .analysis import SPREAD_SOURCES, monte_carlo_trip

@@ -25,6 +25,7 @@ from ...sources.an94002 import circuit as an94002
 from .. import ratings
 from ..common import Result, reported
 from ..solvers import Infeasible
+from . import by_yield
 from . import model as net
 from .explain import drop_levers, explain
 from .model import TABLE, checked
@@ -71,6 +72,8 @@ class LimiterResult(Result):
     warnings: tuple = reported('', 'warnings')
     evaluated: int  # networks the search evaluated exactly
     r7_tried: int  # R7 values whose networks it searched (the others ruled out by the bound alone)
+    mc_yield: float | None = None  # criterion = "yield": the accepted lot's yield (by_yield.lot_yield); else None
+    box_scale: float | None = None  # criterion = "yield": the factor on every tolerance of the box searched
 
     table = TABLE
 
@@ -94,7 +97,10 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
     Returns
     -------
     LimiterResult
-        The chosen R7 and R9..R13 with their trip currents, margins and headroom at every corner.
+        The chosen R7 and R9..R13 with their trip currents, margins and headroom at every corner. With
+        ``criterion = "yield"`` (:mod:`.by_yield`) the network is the one its Monte Carlo lot accepts, the corner
+        figures are still the full corners' (they may lie inside min_margin, or outside the window), and
+        ``mc_yield`` and ``box_scale`` say what the lot held and which box was searched.
 
     Raises
     ------
@@ -106,7 +112,7 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
     s = checked(spec)
     if board:
         supply_rated(s)
-    found = solve(s)
+    found = solve(s) if s["criterion"] == "corners" else by_yield.solve_yield(s)
     r7, network = found["r7"], found["network"]
     if r7 is None:
         why = explain(s)
@@ -126,7 +132,8 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
         headroom_min=float(v["headroom_min"]), divider_current=float(v["divider_current"]),
         binding="the lowest trip current" if m_lo <= m_hi else "the highest trip current",
         evaluated=found["evaluated"], r7_tried=found["tried"], margin_bound=found["bound"],
-        r7_proven=not found["unproven"], best_proven=found["proven"], unproven=found["unproven"])
+        r7_proven=not found["unproven"], best_proven=found["proven"], unproven=found["unproven"],
+        mc_yield=found.get("yield"), box_scale=found.get("scale"))
     result["v_drop"] = float(v["i_trip_max"]) * r7 * (1 - s["r7_tolerance"])  # I = V_cs / R7: highest at R7's low end
     if board and result["v_drop"] > s["v_drop_max"]:  # R7 is the smallest that meets the window: no larger one drops less
         text, levers = drop_levers(s)
@@ -141,6 +148,32 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
     else:
         result.update(r14=None, p_r14=None, i_zener_min=None, p_zener=None)
     return LimiterResult(**result, warnings=tuple(warnings(result, s)))
+
+
+def yield_note(r: dict, s: dict) -> list[str]:
+    """With ``criterion = "yield"``: the design's lot and its corners, side by side (one sentence).
+
+    Parameters
+    ----------
+    r : dict
+        The design's figures, keyed as :class:`LimiterResult`'s fields; "mc_yield", "box_scale", "margin_low" and
+        "margin_high" are read.
+    s : Mapping
+        The checked ``[current_limiter]`` table; ``criterion``, ``yield_min`` and ``min_margin`` are read.
+
+    Returns
+    -------
+    list of str
+        One sentence with ``criterion = "yield"``, none with "corners".
+    """
+    if s["criterion"] != "yield" or r.get("mc_yield") is None:
+        return []
+    worst = min(r["margin_low"], r["margin_high"])
+    return [f"criterion = yield: {r['mc_yield']:.4%} of {by_yield.N:,} boards (seed {by_yield.SEED}, every part uniform "
+            f"in its tolerance) stay inside the window narrowed by min_margin, against yield_min = {s['yield_min']:g}; "
+            f"the network was searched on the corners of a box of {r['box_scale']:.3g} x every tolerance. At the full "
+            f"corners its worst margin is {worst:.2%} (min_margin = {s['min_margin']:.0%}): "
+            + ("the corners hold too" if worst >= s["min_margin"] - 1e-12 else "the corners alone would refuse it")]
 
 
 def ambient(s: dict) -> float:
@@ -261,10 +294,10 @@ def warnings(r: dict, s: dict) -> list[str]:
                    f"{', '.join(eng(v, 'Ω', 3) for v in r['unproven'])} stopped at its evaluation limit without a network, "
                    "so a network with a smaller R7 may exist")
     worst = min(r["margin_low"], r["margin_high"])
-    if not r.get("best_proven", True) or r["margin_bound"] - worst > GAP + 1e-12:
+    if s["criterion"] == "corners" and (not r.get("best_proven", True) or r["margin_bound"] - worst > GAP + 1e-12):
         out.append(f"the worst margin {worst:.2%} is not proven the best for this R7: the search stopped at its "
                    f"evaluation limit with networks of up to {r['margin_bound']:.2%} not ruled out")
-    return out
+    return out + yield_note(r, s)
 
 
 def judge(r7: float, network, s: dict) -> dict:

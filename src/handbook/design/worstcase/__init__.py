@@ -1,0 +1,170 @@
+"""Worst-case analysis of a design: extreme values over every tolerance corner (EVA), root-sum-square (RSS), a
+seeded Monte Carlo lot with its yields, the distributions assumed, which tolerance eats the margin, and drift.
+
+:func:`analyse` takes any of the four designs' results. The Monte Carlo runs the design's own equations on
+numpy arrays (never SPICE): every varying input uniform inside its range (no source the project cites gives a
+better distribution; each :class:`Distribution` says so), drawn in a fixed order from
+``numpy.random.default_rng(seed)``. EVA evaluates the same equations at every corner of the inputs' box, the
+corners the design's own enumeration takes (the tests check they give the design's reported extremes); every
+quantity here is monotonic in each input, so EVA bounds every sample. RSS is nominal +- the root-sum-square of
+each input's first-order effect, half its change from the low to the high end of its range with the others
+nominal. What each design's quantities and limits are: :mod:`.limiter` and :mod:`.models`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import engine
+from . import limiter as _limiter
+from . import models as _models
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """One analysed quantity: nominal, EVA, RSS and Monte Carlo ranges (its unit), its limits (None: none)."""
+
+    key: str
+    label: str
+    unit: str
+    nominal: float
+    eva_low: float
+    eva_high: float
+    rss_low: float
+    rss_high: float
+    mc_low: float
+    mc_high: float
+    limit_low: float | None
+    limit_high: float | None
+
+
+@dataclass(frozen=True)
+class Distribution:
+    """How one part or figure varies: the distribution's kind, its range (the part's unit) and its source."""
+
+    part: str
+    kind: str
+    low: float
+    high: float
+    cite: str
+
+
+@dataclass(frozen=True)
+class Sensitivity:
+    """One tolerance: its share of the binding quantity's first-order variance, and the worst-case margin and
+    Monte Carlo yield with its range halved."""
+
+    source: str
+    share: float
+    margin_if_halved: float
+    yield_if_halved: float
+
+
+@dataclass(frozen=True)
+class WorstCase:
+    """A design's worst-case analysis (:func:`analyse`)."""
+
+    table: str
+    quantities: tuple[Quantity, ...]
+    yields: dict
+    yield_all: float
+    samples: dict
+    distributions: tuple[Distribution, ...]
+    sensitivity: tuple[Sensitivity, ...]
+    drift: tuple[str, ...]
+    n: int
+    seed: int
+    binding: str = ""  # the quantity the sensitivity's shares are of: the limited one of least EVA margin
+
+    def quantity(self, key: str) -> Quantity:
+        """The quantity of that key.
+
+        Parameters
+        ----------
+        key : str
+            A quantity's key.
+
+        Returns
+        -------
+        Quantity
+            The analysed quantity (a ``KeyError`` when there is none of that key).
+        """
+        for q in self.quantities:
+            if q.key == key:
+                return q
+        raise KeyError(key)
+
+
+#: table -> its model builder, from a design's result
+MODELS = {"commutation": _models.commutation,
+          "current_limiter": lambda r: _limiter.model(r.r7, r.network, r.spec),
+          "class_d": _models.class_d, "converter": _models.converter}
+
+
+def model(table: str, result) -> engine.Model:
+    """The worst-case model of a design.
+
+    Parameters
+    ----------
+    table : str
+        "commutation", "current_limiter", "class_d" or "converter".
+    result : Result
+        That design's result (its ``design(spec)``).
+
+    Returns
+    -------
+    engine.Model
+        Its varying inputs, quantities, equations and drift sentences.
+
+    Raises
+    ------
+    KeyError
+        For an unknown table.
+    """
+    return MODELS[table](result)
+
+
+def analyse(table: str, result, n: int = 100_000, seed: int = 1) -> WorstCase:
+    """EVA, RSS and a seeded Monte Carlo of ``n`` boards of one design, with yields and sensitivities.
+
+    Parameters
+    ----------
+    table : str
+        "commutation", "current_limiter", "class_d" or "converter".
+    result : Result
+        That design's result.
+    n : int
+        Boards in the Monte Carlo lot.
+    seed : int
+        Seed of ``numpy.random.default_rng``.
+
+    Returns
+    -------
+    WorstCase
+        Every quantity's ranges (SI units), the yields per limit and overall (fractions), the samples
+        ({key: numpy.ndarray, shape (n,)}), the distributions, the tolerances ranked by their share of the
+        first-order variance of ``binding`` (the limited quantity of the least worst-case margin, each margin a
+        fraction of its limit), each with the least worst-case margin over every limit and the yield of every
+        limit together when that tolerance's range is halved; the drift sentences, ``n`` and ``seed``.
+    """
+    m = model(table, result)
+    nom, eva, eff = engine.nominal(m), engine.corners(m), engine.effects(m)
+    draws = engine.draw(m, n, seed)
+    samples = engine.evaluate(m, draws)
+    quantities = []
+    for q in m.measures:
+        rss = float(np.sqrt(sum(eff[src.name][q.key] ** 2 for src in m.sources)))
+        lo, hi = np.quantile(samples[q.key], engine.QUANTILES)
+        quantities.append(Quantity(q.key, q.label, q.unit, nom[q.key], float(eva[q.key].min()),
+                                   float(eva[q.key].max()), nom[q.key] - rss, nom[q.key] + rss, float(lo), float(hi),
+                                   q.limit_low, q.limit_high))
+    per_limit, overall = engine.yields(m, samples)
+    return WorstCase(
+        table=table, quantities=tuple(quantities), yields=per_limit, yield_all=overall, samples=samples,
+        distributions=tuple(Distribution(src.part, src.kind, src.low, src.high, src.cite) for src in m.sources),
+        sensitivity=tuple(Sensitivity(*row) for row in engine.sensitivity(m, eva, draws)), drift=m.drift, n=n,
+        seed=seed, binding=getattr(engine.binding(m, eva), "key", ""))
+
+
+__all__ = ["MODELS", "Distribution", "Quantity", "Sensitivity", "WorstCase", "analyse", "model"]

@@ -1,0 +1,171 @@
+"""The worst-case models of the TDA5144 timing set, the LM4651/LM4652 class-D stage and the TCA5600 converter:
+each design's own equations (the sources' ``circuit`` functions, elementwise on numpy arrays) over the inputs
+its corners vary.
+
+* commutation: CAP-CD's swing at ``rpm_min`` as a fraction of that board's window (limit 1: the swing fits
+  between the low and high switching levels) and its swing at ``rpm_max`` (limit ``min_excursion``), over the
+  capacitor tolerance and the TDA5144's charge current and two levels;
+* class_d: the oscillator (limits: the LM4651's 50 .. 225 kHz), the output filter's corner (no limit of its own:
+  reported), its Q (``q_max``), the switching residue at the load (``ripple_max``) and THD+N as the analyser
+  reads it (``thd_max``), over L, C_BYP and the oscillator's spread against eq 5;
+* converter: the current the converter delivers at ``v_supply_min`` (limit ``i_out``) and the full-load
+  frequency there (limit the spec's ``f_min``) and at its lowest over the supply range (limit 20 kHz with
+  ``audible = "avoid"``), over R1, L1 (A_L) and the TCA5600's V12(H), V_CE(sat) and V_F.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ...sources.an94002 import circuit as an94002
+from ...sources.lm4651 import circuit as lm4651
+from .engine import Measure, Model, Source
+from .limiter import UNIFORM
+
+#: the TCA5600's V12(H), V_CE(sat) and V_F spread, a fraction either way: an assumption (no public electrical
+#: characteristics were found; the converter's saturation_margin_min is said to cover V12(H)'s spread)
+DEVICE_SPREAD = 0.1
+
+
+def commutation(result) -> Model:
+    """The CAP-CD model of a designed timing set.
+
+    Parameters
+    ----------
+    result : CommutationResult
+        A designed timing set; ``cap_cd`` and the checked spec are read.
+
+    Returns
+    -------
+    Model
+        Inputs ``cap``, ``i_ch``, ``v_low``, ``v_high``; quantities ``swing_rpm_min`` (V, no limit),
+        ``window_fill`` (the swing at rpm_min over the window, limit 1) and ``swing_rpm_max`` (V, limit
+        ``min_excursion``).
+    """
+    s, c = result.spec, result.cap_cd
+    t_slow, t_fast = an94002.t_com(s["rpm_min"], s["pole_pairs"]), an94002.t_com(s["rpm_max"], s["pole_pairs"])
+    table = "TDA5144 datasheet (June 1994), CAP-CD table: min and max only; " + UNIFORM
+    srcs = (Source("cap", "CAP-CD", c * (1 - s["tolerance"]), c * (1 + s["tolerance"]), c, "capacitor tolerance",
+                   f"commutation.tolerance = {s['tolerance']:g} (the capacitor's tolerance class); " + UNIFORM),
+            Source("i_ch", "TDA5144 CAP-CD charge current", s["i_charge_min"], s["i_charge_max"],
+                   (s["i_charge_min"] + s["i_charge_max"]) / 2, "charge current", table),
+            Source("v_low", "TDA5144 CAP-CD low level", s["v_low_min"], s["v_low_max"],
+                   (s["v_low_min"] + s["v_low_max"]) / 2, "low level", table),
+            Source("v_high", "TDA5144 CAP-CD high level", s["v_high_min"], s["v_high_max"],
+                   (s["v_high_min"] + s["v_high_max"]) / 2, "high level", table))
+
+    def f(cap, i_ch, v_low, v_high):
+        swing = i_ch * t_slow / cap
+        return {"swing_rpm_min": swing, "window_fill": swing / (v_high - v_low), "swing_rpm_max": i_ch * t_fast / cap}
+
+    measures = (Measure("swing_rpm_min", "CAP-CD swing at rpm_min", "V"),
+                Measure("window_fill", "CAP-CD swing at rpm_min, fraction of the board's window", "1", None, 1.0,
+                        "window"),
+                Measure("swing_rpm_max", "CAP-CD swing at rpm_max", "V", s["min_excursion"], None, "min_excursion"))
+    tech, tc = ("C0G/NP0, 0 +- 30 ppm/K", 30e-6) if c <= 100e-9 else ("polypropylene film, -200 ppm/K", 200e-6)
+    drift = (f"CAP-CD ({c * 1e9:.3g} nF) is {tech} (the BOM's timing-capacitor class): {tc * 100:.1%} per 100 K, "
+             f"beside tolerance = {s['tolerance']:.0%}; the spec gives no temperature span for the timers, so it is "
+             "not in the analysis.",
+             "The TDA5144's charge current and levels are the datasheet's min and max (June 1994); the project "
+             "holds no figure for their temperature drift beyond them.")
+    return Model(srcs, measures, f, drift)
+
+
+def class_d(result) -> Model:
+    """The output-filter and oscillator model of a designed class-D stage.
+
+    Parameters
+    ----------
+    result : ClassDResult
+        A designed stage; ``f_sw`` (eq 5, nominal), ``l_out``, ``c_out`` and the checked spec are read.
+
+    Returns
+    -------
+    Model
+        Inputs ``osc`` (the oscillator's factor on eq 5), ``l``, ``c``; quantities ``f_sw`` (Hz, limits the
+        LM4651's range), ``f_corner`` (Hz, no limit), ``q`` (limit ``q_max``), ``ripple`` (V rms, limit
+        ``ripple_max``) and ``thd_n`` (fraction, limit ``thd_max``).
+    """
+    s, f_nom, lo, co = result.spec, result.f_sw, result.l_out, result.c_out
+    rl, vs = s["r_load"], s["supply"]
+    srcs = (Source("osc", "LM4651 oscillator (factor on eq 5)", 1 - s["osc_tol_slow"], 1 + s["osc_tol_fast"], 1.0,
+                   "oscillator", "LM4651 table against eq 5 (typicals; no limit is printed): osc_tol_slow, "
+                   "osc_tol_fast; " + UNIFORM),
+            Source("l", "L1, L2", lo * (1 - s["l_tolerance"]), lo * (1 + s["l_tolerance"]), lo, "inductor tolerance",
+                   f"class_d.l_tolerance = {s['l_tolerance']:g}; both coils taken equal (the filter's model); "
+                   + UNIFORM),
+            Source("c", "C_BYP", co * (1 - s["c_tolerance"]), co * (1 + s["c_tolerance"]), co, "capacitor tolerance",
+                   f"class_d.c_tolerance = {s['c_tolerance']:g} (film, J); " + UNIFORM))
+
+    def f(osc, l, c):
+        fs = f_nom * osc
+        return {"f_sw": fs, "f_corner": lm4651.filter_f0(l, c), "q": lm4651.filter_q(l, c, rl),
+                "ripple": lm4651.ripple_rms(fs, l, c, rl, vs),
+                "thd_n": lm4651.thd_n_measured(fs, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"])}
+
+    measures = (Measure("f_sw", "switching frequency", "Hz", lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"],
+                        "oscillator range"),
+                Measure("f_corner", "output filter corner", "Hz"),
+                Measure("q", "output filter Q with the load", "1", None, s["q_max"], "q_max"),
+                Measure("ripple", "switching residue at the load, rms", "V", None, s["ripple_max"], "ripple_max"),
+                Measure("thd_n", "THD+N at the test point (analyser's band)", "%", None, s["thd_max"], "thd_max"))
+    drift = ("The oscillator's spread is eq 5 against the LM4651 table's typicals at 25 C (osc_tol_slow, "
+             "osc_tol_fast); the datasheet prints no temperature drift for it.",
+             f"C_BYP is film (the BOM's class); L's tolerance l_tolerance = {s['l_tolerance']:.0%} is taken to hold "
+             "over temperature; R_DS(on) rises 0.2 %/K (LM4652 table), which the heat sink's corner carries, not "
+             "these quantities.")
+    return Model(srcs, measures, f, drift)
+
+
+def converter(result) -> Model:
+    """The operating-point model of a designed TCA5600 converter.
+
+    Parameters
+    ----------
+    result : ConverterResult
+        A designed converter; ``r1_part``, ``l1_nominal`` and the checked spec are read.
+
+    Returns
+    -------
+    Model
+        Inputs ``r1``, ``l``, ``v12h``, ``vce``, ``vf``; quantities ``i_out_max`` (A, limit ``i_out``),
+        ``f_sw_vmin`` (Hz, limit the spec's ``f_min``) and ``f_sw_low`` (Hz, the lowest over the supply range;
+        limit 20 kHz with ``audible = "avoid"``, else none).
+    """
+    from ..converter.result import AUDIO_BAND
+
+    s, r1, l1 = result.spec, result.r1_part, result.l1_nominal
+    dev = f"assumption: +-{DEVICE_SPREAD:.0%} (no public TCA5600 characteristics; TCA5600 chapter's reading note); "
+    srcs = (Source("r1", "R1", r1 * (1 - s["r1_tolerance"]), r1 * (1 + s["r1_tolerance"]), r1, "R1 tolerance",
+                   f"converter.r1_tolerance = {s['r1_tolerance']:g}; " + UNIFORM),
+            Source("l", "L1 (A_L)", l1 * (1 - s["a_l_tolerance"]), l1 * (1 + s["a_l_tolerance"]), l1, "A_L tolerance",
+                   f"converter.a_l_tolerance = {s['a_l_tolerance']:g} (gapped core, turns fixed); " + UNIFORM),
+            *(Source(k, part, s[key] * (1 - DEVICE_SPREAD), s[key] * (1 + DEVICE_SPREAD), s[key], part, dev + UNIFORM)
+              for k, key, part in (("v12h", "v12h", "TCA5600 V12(H)"), ("vce", "v_ce_sat", "TCA5600 V_CE(sat)"),
+                                   ("vf", "v_f", "rectifier V_F"))))
+    top = s["v_out"] + s["v_regulator_drop"]
+
+    def freq(vcc, l, i_pk, vce, vf, v12h):
+        plus, minus = top + vf - vcc, vcc - vce - v12h
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(plus > 0, 1 / (l * i_pk * (1 / minus + 1 / np.where(plus > 0, plus, 1.0))), 0.0)
+
+    def f(r1, l, v12h, vce, vf):
+        i_pk = v12h / r1  # eq 5 read backwards: R1 sets the peak current
+        plus, minus = top + vf - s["v_supply_min"], s["v_supply_min"] - vce - v12h
+        f_lo = freq(s["v_supply_min"], l, i_pk, vce, vf, v12h)
+        return {"i_out_max": i_pk / 2 * minus / (minus + plus), "f_sw_vmin": f_lo,
+                "f_sw_low": np.minimum(f_lo, freq(s["v_supply_max"], l, i_pk, vce, vf, v12h))}
+
+    avoid = s["audible"] == "avoid"
+    measures = (Measure("i_out_max", "current delivered at v_supply_min", "A", s["i_out"], None, "i_out"),
+                Measure("f_sw_vmin", "full-load frequency at v_supply_min", "Hz", s["f_min"], None, "f_min"),
+                Measure("f_sw_low", "lowest full-load frequency over the supply range", "Hz",
+                        AUDIO_BAND if avoid else None, None, "audio band" if avoid else ""))
+    drift = (f"A_L's temperature drift is taken inside a_l_tolerance = {s['a_l_tolerance']:.0%} (the schema's "
+             "assumption for a gap ground to order); the core's saturation, which does drift, is judged by the design "
+             "at t_ambient + the coil's rise (the material's 25 C and 100 C figures, PyOpenMagnetics' database).",
+             "R1 (the BOM's metal film, <= 100 ppm/K) drifts 0.5 % over 50 K, half its 1 % tolerance: not in the "
+             "analysis.",
+             "V12(H), V_CE(sat) and V_F have no public figures, nor temperature coefficients (the TCA5600 chapter's "
+             f"reading note): the assumed +-{DEVICE_SPREAD:.0%} stands for spread and drift together.")
+    return Model(srcs, measures, f, drift)
