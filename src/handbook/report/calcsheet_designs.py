@@ -6,9 +6,13 @@ E-series pick, a tolerance, a rating rule) is a step in words.
 """
 from __future__ import annotations
 
-from .calcsheet import equation_step, shown, words
+from .calcsheet_steps import equation_step, shown, words
 
 _AN = "AN94002"
+
+
+def _pct(fraction: float) -> str:
+    return f"{fraction * 100:.3g} %"
 
 
 def _at(value: float, unit: str) -> str:
@@ -40,9 +44,9 @@ def commutation(r) -> list:
                          {"I_{ch,max}": (s["i_charge_max"], "A"), "N_{min}": (s["rpm_min"] / 60, "rpm"),
                           r"\Delta{}V_{win}": (window, "V"), "n": (n, "1")},
                          (r.continuous_optimum * (1 - tol), "F")),
-           words(f"With the capacitor {tol:.0%} low the nominal must be "
+           words(f"With the capacitor {tol * 100:g} % low the nominal must be "
                  f"{_at(r.continuous_optimum * (1 - tol), 'F')} / (1 − {tol:g}) = {_at(r.continuous_optimum, 'F')}",
-                 (r.continuous_optimum, "F"), f"{here}: capacitor tolerance {tol:.0%}"),
+                 (r.continuous_optimum, "F"), f"{here}: capacitor tolerance {tol * 100:g} %"),
            words(f"{s['series']} value at or above {_at(r.continuous_optimum, 'F')}: {_at(r.cap_cd, 'F')} "
                  f"(CAP-DC = CAP-CD; the next smaller, {_at(r.next_smaller, 'F')}, fails at a corner)",
                  (r.cap_cd, "F"), f"{here}: {s['series']} series pick, re-checked at all 16 corners"),
@@ -57,7 +61,7 @@ def commutation(r) -> list:
                           r"\Delta{}V": (window, "V"), "n": (n, "1")},
                          (r.rpm_min_reliable / 60, "rpm"), solve_for="N"),
            words(f"Smallest swing at {s['rpm_max']:g} rpm, {_at(r.swing_at_rpm_max, 'V')}, over the "
-                 f"{_at(s['min_excursion'], 'V')} noise floor: noise margin {r.noise_margin:.1%}",
+                 f"{_at(s['min_excursion'], 'V')} noise floor: noise margin {_pct(r.noise_margin)}",
                  (r.noise_margin, "%"), f"{here}: the swing at rpm_max at its worst corner")]
     if r.start is not None:
         out += _start(r, s)
@@ -70,7 +74,8 @@ def _start(r, s) -> list:
     st, tol, mt = r.start, s["tolerance"], s["motor_tolerance"]
     here = "handbook.design.commutation (timers)"
     return [
-        equation_step(f"Slowest rotor rocking about a detent (K_t and I {mt:.0%} low, J {mt:.0%} high)", "an94002-eq2",
+        equation_step(f"Slowest rotor rocking about a detent (K_t and I {mt * 100:g} % low, J {mt * 100:g} % high)",
+                      "an94002-eq2",
                       {"K_t": (s["torque_constant"] * (1 - mt), "N·m/A"), "I": (s["start_current"] * (1 - mt), "A"),
                        "p": (s["pole_pairs"], "1"), "J": (s["inertia"] * (1 + mt), "kg·m²")},
                       (st.f_osc_min, "Hz")),
@@ -82,7 +87,7 @@ def _start(r, s) -> list:
                       {"t_{start}": (st.settle, "s"), "I_{ST}": (s["i_st_max"], "A"),
                        "V_{high}": (s["v_st_high"], "V"), "V_{low}": (s["v_st_low"], "V")},
                       (st.bound * (1 - tol), "F"), solve_for="C_{ST}"),
-        words(f"With the capacitor {tol:.0%} low the nominal must be {_at(st.bound, 'F')}; {s['series']} value at or "
+        words(f"With the capacitor {tol * 100:g} % low the nominal must be {_at(st.bound, 'F')}; {s['series']} value at or "
               f"above it: {_at(st.cap_st, 'F')}", (st.cap_st, "F"), f"{here}: {s['series']} series pick"),
         equation_step("Shortest start period of the chosen CAP-ST (capacitor low, largest current)", "an94002-eq1",
                       {"C_{ST}": (st.cap_st * (1 - tol), "F"), "I_{ST}": (s["i_st_max"], "A"),
@@ -142,9 +147,9 @@ def limiter(r) -> list:
                       (r.v_cs_nominal, "V")),
         words(f"Nominal trip current by Ohm's law at R7: {_at(r.v_cs_nominal, 'V')} / {_at(r.r7, 'Ω')} = "
               f"{_at(r.i_trip_nominal, 'A')}", (r.i_trip_nominal, "A"), f"{here}: I = V_cs / R7"),
-        words(f"Trip current at every corner (resistors ±{s['resistor_tolerance']:.0%}, R7 ±{s['r7_tolerance']:.0%}, "
+        words(f"Trip current at every corner (resistors ±{_pct(s['resistor_tolerance'])}, R7 ±{_pct(s['r7_tolerance'])}, "
               f"zener tolerance and drift, op-amp offset and bias currents): {_at(r.i_trip_min, 'A')} .. "
-              f"{_at(r.i_trip_max, 'A')}, margins {r.margin_low:.1%} and {r.margin_high:.1%}",
+              f"{_at(r.i_trip_max, 'A')}, margins {_pct(r.margin_low)} and {_pct(r.margin_high)}",
               (f"{_at(r.i_trip_min, 'A')} .. {_at(r.i_trip_max, 'A')}", ""),
               f"{here}: every tolerance corner, exactly (model.verify)"),
         words(f"Loss in R7 at the highest trip current, R7 at its low end: ({_at(r.i_trip_max, 'A')})² · "
@@ -184,6 +189,9 @@ def class_d(r) -> list:
     t_target = DEVICE["tj_max"] - s["tj_margin"]
     theta_jc = DEVICE["theta_jc"][s["package"]]
     r_eff = r.r_osc - 0.4 * r.r_dly
+    f_set, p_set = _heat_corner(s, r)
+    fitted = ("the one needed" if s["theta_sa_available"] is None else
+              f"θ_SA = {s['theta_sa_available']:g} K/W available")
     return [
         words(f"{s['r_dly_series']} R_DLY at or above ({_at(s['dead_time_min'], 's')} − {_at(T_DEAD_0, 's')}) / "
               f"{_at(C_DEAD, 'F')} per Ω, the LM4651 table's dead time at R_DLY = 0 plus eq 4's slope: "
@@ -196,19 +204,30 @@ def class_d(r) -> list:
         equation_step(f"Switching frequency, R_OSC less 0.4 R_DLY ({_at(r.r_osc, 'Ω')} − 0.4 · "
                       f"{_at(r.r_dly, 'Ω')})", "lm4651-eq5",
                       {r"\{R_{OSC}\}_{\Omega}": (r_eff, "1")}, (r.f_sw, "Hz")),
-        words(f"Oscillator corners (−{s['osc_tol_slow']:.0%}, +{s['osc_tol_fast']:.0%}, eq 5 against the "
+        words(f"Oscillator corners (−{_pct(s['osc_tol_slow'])}, +{_pct(s['osc_tol_fast'])}, eq 5 against the "
               f"datasheet's table): {_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}",
               (f"{_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}", ""), f"{here}: oscillator tolerance"),
         equation_step("Output filter's corner", "lm4651-filter",
                       {"L_1": (r.l_out, "H"), "C_{BYP}": (r.c_out, "F")}, (r.f_corner, "Hz")),
-        words(f"LM4652 dissipation at {r.thermal_basis}, {_at(r.p_thermal, 'W')} out (eq 9 and 10 switching, "
-              f"conduction at R_DS(on) maximum at {t_target:g} °C, idle share): {_at(r.p_dissipation, 'W')}",
-              (r.p_dissipation, "W"), f"{here}: thermal model (model.heat)"),
+        words(f"LM4652 dissipation at {r.thermal_basis}, at the oscillator corner that sets the heat sink "
+              f"({_at(f_set, 'Hz')}; eq 9 and 10 switching, conduction at R_DS(on) maximum at {t_target:g} °C, idle "
+              f"share): {_at(p_set, 'W')}", (p_set, "W"), f"{here}: thermal model (model.heat)"),
         equation_step(f"Heat sink needed to hold T_j at {t_target:g} °C", "lm4651-eq11",
-                      {"T_{jmax}": (t_target, "°C"), "T_{a}": (s["t_ambient"], "°C"), "P_D": (r.p_dissipation, "W"),
+                      {"T_{jmax}": (t_target, "°C"), "T_{a}": (s["t_ambient"], "°C"), "P_D": (p_set, "W"),
                        r"\theta_{JC}": (theta_jc, "K/W"), r"\theta_{CS}": (s["theta_cs"], "K/W")},
                       (r.theta_sa_required, "K/W")),
+        words(f"With the heat sink fitted ({fitted}) the hotter corner runs at T_j = {r.t_junction:.4g} °C and "
+              f"dissipates {_at(r.p_dissipation, 'W')}", (r.p_dissipation, "W"), f"{here}: thermal model (model.thermal)"),
     ]
+
+
+def _heat_corner(s, r) -> tuple[float, float]:
+    """(the oscillator corner whose heat sink need is the smaller, Hz; the LM4652's dissipation there with T_j at
+    150 C - tj_margin, W): the corner and dissipation eq 11 is taken at (model.thermal)."""
+    from ..design.class_d import model
+
+    need, f = min((float(model.heat(s, f)[0]), f) for f in (r.f_sw_min, r.f_sw_max))
+    return f, float(model.heat(s, f)[2])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -251,7 +270,7 @@ def converter(r) -> list:
               f"{_at(r.r1 / (1 + s['r1_tolerance']), 'Ω')}: {_at(r.r1_part, 'Ω')}; the peak current reaches "
               f"{_at(r.i_peak_max, 'A')} with R1 at its low end", (r.r1_part, "Ω"),
               f"{here}: {s['r1_series']} series pick"),
-        words(f"Inductance to wind so that L1 at +{s['a_l_tolerance']:.0%} A_L still runs at f_min at the highest "
+        words(f"Inductance to wind so that L1 at +{_pct(s['a_l_tolerance'])} A_L still runs at f_min at the highest "
               f"peak current: {_at(r.l1_nominal, 'H')}", (r.l1_nominal, "H"), f"{here}: A_L tolerance"),
         words(f"Smallest core of the candidate set meeting every limit: {r.core_shape} in {r.core_material}, "
               f"{r.turns} turns, {r.wire}", (f"{r.core_shape}, {r.turns} turns", ""),
