@@ -16,6 +16,7 @@ _GREEK = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": 
           "Lambda": "Λ", "Sigma": "Σ", "Phi": "Φ", "Omega": "Ω", "Psi": "Ψ"}
 _OPERATORS = {"cdot": "·", "times": "×", "ge": "≥", "geq": "≥", "le": "≤", "leq": "≤", "approx": "≈",
               "pm": "±", "infty": "∞", "checkmark": "✓", "%": "%", "{": "{", "}": "}", "ldots": "…"}
+_MINUS = "\N{MINUS SIGN}"
 _SPACES = {",": "0.1667em", ";": "0.2778em", ":": "0.2222em", "quad": "1em", "qquad": "2em", " ": "0.25em",
            "!": "0em"}
 _TOKEN = re.compile(r"\\(?:text|mathrm|operatorname|textrm|mbox)\{([^{}]*)\}|\\([A-Za-z]+|.)|(\d+(?:\.\d+)?)|(\s+)|([A-Za-z]+|.)",
@@ -100,7 +101,7 @@ class _Parser:
                 return inner
             if val.isalpha():
                 return f"<mi>{escape(val)}</mi>"
-            return f"<mo>{escape(val)}</mo>"
+            return f"<mo>{escape(_MINUS if val == '-' else val)}</mo>"
         if val in ("frac", "dfrac", "tfrac"):
             return f"<mfrac>{self.group()}{self.group()}</mfrac>"
         if val == "sqrt":
