@@ -1,0 +1,283 @@
+"""The calculation sheet's steps for each of the four designs, in the order each design takes them.
+
+Every value substituted is the design's own: read from its result and its checked spec (``result.spec``).
+A step from a registry record says which form it shows; a number no registry equation gives (a search, an
+E-series pick, a tolerance, a rating rule) is a step in words.
+"""
+from __future__ import annotations
+
+from .calcsheet_steps import equation_step, shown, words
+
+_AN = "AN94002"
+
+
+def _pct(fraction: float) -> str:
+    return f"{fraction * 100:.3g} %"
+
+
+def _at(value: float, unit: str) -> str:
+    return shown(value, unit)[1]
+
+
+# ----------------------------------------------------------------------------------------------
+# commutation (AN94002 2.1)
+
+def commutation(r) -> list:
+    """The TDA5143/5144 timing set: CAP-CD by eq 6, its speed range by eq 7 and eq 5, CAP-ST by eq 2 and 1,
+    CAP-TI by eq 9.
+
+    Parameters
+    ----------
+    r : CommutationResult
+        The designed timing set.
+
+    Returns
+    -------
+    list of Step
+        The steps, CAP-CD first, then CAP-ST and CAP-TI where they were designed.
+    """
+    s, tol, n = r.spec, r.spec["tolerance"], r.spec["pole_pairs"]
+    window = s["v_high_min"] - s["v_low_max"]
+    here = "handbook.design.commutation"
+    out = [equation_step("Smallest CAP-CD whose swing at rpm_min fits the narrowest window, at the capacitor's low "
+                         "end", "an94002-eq6",
+                         {"I_{ch,max}": (s["i_charge_max"], "A"), "N_{min}": (s["rpm_min"] / 60, "rpm"),
+                          r"\Delta{}V_{win}": (window, "V"), "n": (n, "1")},
+                         (r.continuous_optimum * (1 - tol), "F")),
+           words(f"With the capacitor {tol * 100:g} % low the nominal must be "
+                 f"{_at(r.continuous_optimum * (1 - tol), 'F')} / (1 − {tol:g}) = {_at(r.continuous_optimum, 'F')}",
+                 (r.continuous_optimum, "F"), f"{here}: capacitor tolerance {tol * 100:g} %"),
+           words(f"{s['series']} value at or above {_at(r.continuous_optimum, 'F')}: {_at(r.cap_cd, 'F')} "
+                 f"(CAP-DC = CAP-CD; the next smaller, {_at(r.next_smaller, 'F')}, fails at a corner)",
+                 (r.cap_cd, "F"), f"{here}: {s['series']} series pick, re-checked at all 16 corners"),
+           equation_step("Highest reliable speed: the smallest swing (smallest current, capacitor high) stays above "
+                         "the noise floor", "an94002-eq7",
+                         {"I_{ch,min}": (s["i_charge_min"], "A"), "C_{CD}": (r.cap_cd * (1 + tol), "F"),
+                          r"\Delta{}V_{noise}": (s["min_excursion"], "V"), "n": (n, "1")},
+                         (r.rpm_max_reliable / 60, "rpm")),
+           equation_step("Lowest reliable speed: the largest swing (largest current, capacitor low) fits the "
+                         "narrowest window", "an94002-eq5",
+                         {"I": (s["i_charge_max"], "A"), "C_{CD}": (r.cap_cd * (1 - tol), "F"),
+                          r"\Delta{}V": (window, "V"), "n": (n, "1")},
+                         (r.rpm_min_reliable / 60, "rpm"), solve_for="N"),
+           words(f"Smallest swing at {s['rpm_max']:g} rpm, {_at(r.swing_at_rpm_max, 'V')}, over the "
+                 f"{_at(s['min_excursion'], 'V')} noise floor: noise margin {_pct(r.noise_margin)}",
+                 (r.noise_margin, "%"), f"{here}: the swing at rpm_max at its worst corner")]
+    if r.start is not None:
+        out += _start(r, s)
+    if r.watchdog is not None:
+        out += _watchdog(r, s)
+    return out
+
+
+def _start(r, s) -> list:
+    st, tol, mt = r.start, s["tolerance"], s["motor_tolerance"]
+    here = "handbook.design.commutation (timers)"
+    return [
+        equation_step(f"Slowest rotor rocking about a detent (K_t and I {mt * 100:g} % low, J {mt * 100:g} % high)",
+                      "an94002-eq2",
+                      {"K_t": (s["torque_constant"] * (1 - mt), "N·m/A"), "I": (s["start_current"] * (1 - mt), "A"),
+                       "p": (s["pole_pairs"], "1"), "J": (s["inertia"] * (1 + mt), "kg·m²")},
+                      (st.f_osc_min, "Hz")),
+        words(f"The rocking at {_at(st.f_osc_min, 'Hz')} (damping ratio {s['damping_ratio']:g}) decays to "
+              f"{s['residual']:g} of its first swing in ln(1/{s['residual']:g}) / (ζ 2π f) = {_at(st.settle, 's')}",
+              (st.settle, "s"), f"{here}: a damped oscillator's envelope (not a registry equation)"),
+        equation_step("Smallest CAP-ST whose shortest start period (largest current) outlasts the decay, at the "
+                      "capacitor's low end", "an94002-eq1",
+                      {"t_{start}": (st.settle, "s"), "I_{ST}": (s["i_st_max"], "A"),
+                       "V_{high}": (s["v_st_high"], "V"), "V_{low}": (s["v_st_low"], "V")},
+                      (st.bound * (1 - tol), "F"), solve_for="C_{ST}"),
+        words(f"With the capacitor {tol * 100:g} % low the nominal must be {_at(st.bound, 'F')}; {s['series']} value at or "
+              f"above it: {_at(st.cap_st, 'F')}", (st.cap_st, "F"), f"{here}: {s['series']} series pick"),
+        equation_step("Shortest start period of the chosen CAP-ST (capacitor low, largest current)", "an94002-eq1",
+                      {"C_{ST}": (st.cap_st * (1 - tol), "F"), "I_{ST}": (s["i_st_max"], "A"),
+                       "V_{high}": (s["v_st_high"], "V"), "V_{low}": (s["v_st_low"], "V")},
+                      (st.period_min, "s")),
+    ]
+
+
+def _watchdog(r, s) -> list:
+    from ..design.commutation.timers import V_TI
+
+    wd, tol = r.watchdog, s["tolerance"]
+    here = "handbook.design.commutation (timers)"
+    levels = {"V_{high}": (V_TI[1], "V"), "V_{low}": (V_TI[0], "V")}
+    reverse = "" if wd.t_reverse is None else (f" and whose longest catches reverse rotation at "
+                                              f"{s['rpm_reverse']:g} rpm ({_at(wd.t_reverse, 's')} for 150° el.)")
+    return [
+        words(f"{s['series']} CAP-TI whose shortest watchdog time outlasts the {_at(s['flyback_time'], 's')} flyback"
+              f"{reverse}, at least 2000 pF: {_at(wd.cap_ti, 'F')} ({wd.binding})", (wd.cap_ti, "F"),
+              f"{here}: {s['series']} series pick; AN94002 2.1.3 (CAP-TI at least 2000 pF)"),
+        equation_step("Shortest watchdog time (capacitor low, largest current)", "an94002-eq9",
+                      {"C_{TI}": (wd.cap_ti * (1 - tol), "F"), "I_{wd}": (s["i_wd_max"], "A"), **levels},
+                      (wd.t_wd_min, "s"), solve_for="t_{wd}"),
+        equation_step("Longest watchdog time (capacitor high, smallest current)", "an94002-eq9",
+                      {"C_{TI}": (wd.cap_ti * (1 + tol), "F"), "I_{wd}": (s["i_wd_min"], "A"), **levels},
+                      (wd.t_wd_max, "s"), solve_for="t_{wd}"),
+    ]
+
+
+# ----------------------------------------------------------------------------------------------
+# current limiter (AN94002 2.4)
+
+def limiter(r) -> list:
+    """The op-amp current limiter: the search's network, its trip voltage by eq 13, the trip current, its
+    corners, R7's loss and rating and R14.
+
+    Parameters
+    ----------
+    r : LimiterResult
+        The designed limiter.
+
+    Returns
+    -------
+    list of Step
+        The steps, the search first.
+    """
+    s = r.spec
+    here = "handbook.design.limiter"
+    net = ", ".join(f"R{k} = {_at(getattr(r, f'r{k}'), 'Ω')}" for k in (9, 10, 11, 12, 13))
+    out = [
+        words(f"Exact search over {s['r7_series']} R7 and the divider networks: the smallest R7 with every corner "
+              f"inside {_at(s['i_no_trip'], 'A')} .. {_at(s['i_must_trip'], 'A')} is {_at(r.r7, 'Ω')}; {net}",
+              (r.r7, "Ω"), f"{here}: exact search by closed-form bounds (search.solve)"),
+        equation_step("Nominal sense voltage at the trip point (zener at its nominal voltage)", "an94002-eq13",
+                      {"V_{D1}": (s["zener_voltage"], "V"), "R_9": (r.r9, "Ω"), "R_{10}": (r.r10, "Ω"),
+                       "R_{11}": (r.r11, "Ω"), "R_{12}": (r.r12, "Ω"), "R_{13}": (r.r13, "Ω")},
+                      (r.v_cs_nominal, "V")),
+        words(f"Nominal trip current by Ohm's law at R7: {_at(r.v_cs_nominal, 'V')} / {_at(r.r7, 'Ω')} = "
+              f"{_at(r.i_trip_nominal, 'A')}", (r.i_trip_nominal, "A"), f"{here}: I = V_cs / R7"),
+        words(f"Trip current at every corner (resistors ±{_pct(s['resistor_tolerance'])}, R7 ±{_pct(s['r7_tolerance'])}, "
+              f"zener tolerance and drift, op-amp offset and bias currents): {_at(r.i_trip_min, 'A')} .. "
+              f"{_at(r.i_trip_max, 'A')}, margins {_pct(r.margin_low)} and {_pct(r.margin_high)}",
+              (f"{_at(r.i_trip_min, 'A')} .. {_at(r.i_trip_max, 'A')}", ""),
+              f"{here}: every tolerance corner, exactly (model.verify)"),
+        words(f"Loss in R7 at the highest trip current, R7 at its low end: ({_at(r.i_trip_max, 'A')})² · "
+              f"{_at(r.r7 * (1 - s['r7_tolerance']), 'Ω')} = {_at(r.p_r7, 'W')}", (r.p_r7, "W"),
+              f"{here}: P = I² R"),
+        words(f"R7's rating: the stall loss at 50 % of the rating at the highest ambient: {_at(r.r7_rating, 'W')} "
+              f"({r.r7_package})", (r.r7_rating, "W"), "handbook.design.ratings: derating rule"),
+    ]
+    if r.r14 is not None:
+        out.append(words(f"{s['r14_series']} R14 at or below the largest that feeds D1 its test current and the "
+                         f"dividers at the lowest supply: {_at(r.r14, 'Ω')}", (r.r14, "Ω"),
+                         f"{here}: {s['r14_series']} series pick (zener_feed)"))
+    return out
+
+
+# ----------------------------------------------------------------------------------------------
+# class D (LM4651/LM4652)
+
+def class_d(r) -> list:
+    """The LM4651/LM4652 amplifier: R_DLY, the search's R_OSC, L and C_BYP, eq 5's frequency, the output
+    filter's corner and eq 11's heat sink.
+
+    Parameters
+    ----------
+    r : ClassDResult
+        The designed amplifier.
+
+    Returns
+    -------
+    list of Step
+        The steps, R_DLY first.
+    """
+    from ..sources.lm4651.circuit import C_DEAD, DEVICE, T_DEAD_0
+
+    s = r.spec
+    here = "handbook.design.class_d"
+    t_target = DEVICE["tj_max"] - s["tj_margin"]
+    theta_jc = DEVICE["theta_jc"][s["package"]]
+    r_eff = r.r_osc - 0.4 * r.r_dly
+    f_set, p_set = _heat_corner(s, r)
+    fitted = ("the one needed" if s["theta_sa_available"] is None else
+              f"θ_SA = {s['theta_sa_available']:g} K/W available")
+    return [
+        words(f"{s['r_dly_series']} R_DLY at or above ({_at(s['dead_time_min'], 's')} − {_at(T_DEAD_0, 's')}) / "
+              f"{_at(C_DEAD, 'F')} per Ω, the LM4651 table's dead time at R_DLY = 0 plus eq 4's slope: "
+              f"{_at(r.r_dly, 'Ω')}", (r.r_dly, "Ω"), f"{here}: {s['r_dly_series']} series pick; LM4651/LM4652 "
+              "table and eq (4)"),
+        words(f"IPOPT, then a proven series search over {s['r_osc_series']} R_OSC, {s['l_series']} L and "
+              f"{s['c_series']} C_BYP at the worst of the tolerance corners: R_OSC = {_at(r.r_osc, 'Ω')}, "
+              f"L = {_at(r.l_out, 'H')}, C_BYP = {_at(r.c_out, 'F')}", (r.r_osc, "Ω"),
+              f"{here}: continuous optimum snapped to the series (search)"),
+        equation_step(f"Switching frequency, R_OSC less 0.4 R_DLY ({_at(r.r_osc, 'Ω')} − 0.4 · "
+                      f"{_at(r.r_dly, 'Ω')})", "lm4651-eq5",
+                      {r"\{R_{OSC}\}_{\Omega}": (r_eff, "1")}, (r.f_sw, "Hz")),
+        words(f"Oscillator corners (−{_pct(s['osc_tol_slow'])}, +{_pct(s['osc_tol_fast'])}, eq 5 against the "
+              f"datasheet's table): {_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}",
+              (f"{_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}", ""), f"{here}: oscillator tolerance"),
+        equation_step("Output filter's corner", "lm4651-filter",
+                      {"L_1": (r.l_out, "H"), "C_{BYP}": (r.c_out, "F")}, (r.f_corner, "Hz")),
+        words(f"LM4652 dissipation at {r.thermal_basis}, at the oscillator corner that sets the heat sink "
+              f"({_at(f_set, 'Hz')}; eq 9 and 10 switching, conduction at R_DS(on) maximum at {t_target:g} °C, idle "
+              f"share): {_at(p_set, 'W')}", (p_set, "W"), f"{here}: thermal model (model.heat)"),
+        equation_step(f"Heat sink needed to hold T_j at {t_target:g} °C", "lm4651-eq11",
+                      {"T_{jmax}": (t_target, "°C"), "T_{a}": (s["t_ambient"], "°C"), "P_D": (p_set, "W"),
+                       r"\theta_{JC}": (theta_jc, "K/W"), r"\theta_{CS}": (s["theta_cs"], "K/W")},
+                      (r.theta_sa_required, "K/W")),
+        words(f"With the heat sink fitted ({fitted}) the hotter corner runs at T_j = {r.t_junction:.4g} °C and "
+              f"dissipates {_at(r.p_dissipation, 'W')}", (r.p_dissipation, "W"), f"{here}: thermal model (model.thermal)"),
+    ]
+
+
+def _heat_corner(s, r) -> tuple[float, float]:
+    """(the oscillator corner whose heat sink need is the smaller, Hz; the LM4652's dissipation there with T_j at
+    150 C - tj_margin, W): the corner and dissipation eq 11 is taken at (model.thermal)."""
+    from ..design.class_d import model
+
+    need, f = min((float(model.heat(s, f)[0]), f) for f in (r.f_sw_min, r.f_sw_max))
+    return f, float(model.heat(s, f)[2])
+
+
+# ----------------------------------------------------------------------------------------------
+# converter (TCA5600)
+
+def converter(r) -> list:
+    """The TCA5600 dc/dc converter: eq 1 to 6a at the lowest supply, R1 from its series, the coil.
+
+    Parameters
+    ----------
+    r : ConverterResult
+        The designed converter.
+
+    Returns
+    -------
+    list of Step
+        The steps, eq 1 first.
+    """
+    s = r.spec
+    here = "handbook.design.converter"
+    v = {"V_{out2}": (s["v_out"], "V"), "V_{(9-8)}": (s["v_regulator_drop"], "V"), "V_F": (s["v_f"], "V"),
+         "V_{CC2}": (s["v_supply_min"], "V"), "V_{CE(sat)}": (s["v_ce_sat"], "V"), "V_{12(H)}": (s["v12h"], "V")}
+    pick = lambda *names: {k: v[k] for k in names}  # noqa: E731
+    out = [
+        equation_step("Coil voltage while dumping, at the lowest supply", "tca5600-eq1",
+                      pick("V_F", "V_{(9-8)}", "V_{CC2}", "V_{out2}"), (r.vl_plus, "V")),
+        equation_step("Coil voltage while charging, at the lowest supply", "tca5600-eq2",
+                      pick("V_{12(H)}", "V_{CC2}", "V_{CE(sat)}"), (r.vl_minus, "V")),
+        equation_step("Charge to dump time ratio", "tca5600-eq3",
+                      {"V_{L+}": (r.vl_plus, "V"), "V_{L-}": (r.vl_minus, "V")}, (r.alpha, "1")),
+        equation_step("Charging time at the lowest frequency", "tca5600-eq4",
+                      {r"\alpha": (r.alpha, "1"), "f": (r.f_min_design, "Hz")}, (r.t1, "s")),
+        equation_step("Peak coil current", "tca5600-eq5",
+                      {"I_{out2}": (s["i_out"], "A"), r"\alpha": (r.alpha, "1")}, (r.i_peak, "A")),
+        equation_step("Coil inductance", "tca5600-eq6",
+                      {"V_{L-}": (r.vl_minus, "V"), "t_1": (r.t1, "s"), "I_{L(peak)}": (r.i_peak, "A")}, (r.l1, "H")),
+        equation_step("Current-sense resistor", "tca5600-eq6a",
+                      {"V_{12(H)}": (s["v12h"], "V"), "I_{L(peak)}": (r.i_peak, "A")}, (r.r1, "Ω")),
+        words(f"{s['r1_series']} R1 at or below R1 / (1 + {s['r1_tolerance']:g}) = "
+              f"{_at(r.r1 / (1 + s['r1_tolerance']), 'Ω')}: {_at(r.r1_part, 'Ω')}; the peak current reaches "
+              f"{_at(r.i_peak_max, 'A')} with R1 at its low end", (r.r1_part, "Ω"),
+              f"{here}: {s['r1_series']} series pick"),
+        words(f"Inductance to wind so that L1 at +{_pct(s['a_l_tolerance'])} A_L still runs at f_min at the highest "
+              f"peak current: {_at(r.l1_nominal, 'H')}", (r.l1_nominal, "H"), f"{here}: A_L tolerance"),
+        words(f"Smallest core of the candidate set meeting every limit: {r.core_shape} in {r.core_material}, "
+              f"{r.turns} turns, {r.wire}", (f"{r.core_shape}, {r.turns} turns", ""),
+              f"{here}: exact enumeration of PyOpenMagnetics' cores, smallest first"),
+    ]
+    return out
+
+
+#: spec table -> its sheet
+BUILDERS = {"commutation": commutation, "current_limiter": limiter, "class_d": class_d, "converter": converter}
