@@ -13,6 +13,12 @@ LOSSES = {"current_limiter": ("p_r7", "r7_rating", "r7_package", "v_drop", "p_r1
           "class_d": ("efficiency", "thermal_basis", "p_thermal", "p_dissipation", "theta_sa_required", "t_junction",
                       "needs_heat_sink", "t_junction_no_sink"),
           "converter": ("core_loss", "winding_loss", "temperature_rise", "saturation_margin", "b_peak_min_area")}
+#: how the section reads its margins and ratings, as MathML (no script typesets it: the browser does)
+MARGIN_MATH = ('<p>A margin is how far the worst corner stays inside its limit, as a fraction of the limit; a part\'s '
+               'rating is used by its worst-case stress:</p><math display="block"><mi>m</mi><mo>=</mo><mfrac><mrow>'
+               '<mo>|</mo><mtext>limit</mtext><mo>&#x2212;</mo><mtext>worst</mtext><mo>|</mo></mrow><mtext>limit</mtext></mfrac><mo>,</mo>'
+               '<mspace width="2em"/><mi>u</mi><mo>=</mo><mfrac><msub><mi>S</mi><mtext>worst</mtext></msub>'
+               '<msub><mi>R</mi><mtext>rated</mtext></msub></mfrac></math>')
 #: results shown apart from the results table (what binds, in its own line; warnings in section 7)
 APART = ("binding", "warnings")
 
@@ -94,7 +100,7 @@ def margins_table(t: str, result) -> str:
 
 def circuits_section(ctx) -> str:
     """Section 2: for each designed circuit its schematic, its parts with ratings, what binds and the margins."""
-    out = []
+    out = [MARGIN_MATH]
     for t, result in ctx.designed.items():
         sheet = SHEETS[t][0]
         out += [f'<h3 id="circuit-{t}">{esc(title(t))}</h3>', _schematic(t, result),
@@ -102,7 +108,7 @@ def circuits_section(ctx) -> str:
                 "<h4>Chosen parts and their ratings</h4>", parts_table([r for r in ctx.bom if r["sheet"] == sheet]),
                 "<h4>Margins</h4>", margins_table(t, result) or note("this design states no margin as a fraction"),
                 f"<details open><summary>Every result of [{esc(t)}]</summary>{results_table(t, result)}</details>"]
-    return "".join(out) or note("nothing designed")
+    return "".join(out)
 
 
 def losses_section(ctx) -> str:
