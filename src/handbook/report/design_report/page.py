@@ -37,8 +37,8 @@ math { font-size: 1.05em; }
 @media print {
   body { max-width: none; padding: 0; font-size: 10.5pt; }
   footer.trace { display: none; }
-  details > summary { display: none; }
-  h2 { break-after: avoid; } figure, tr { break-inside: avoid; }
+  details::details-content { content-visibility: visible !important; display: block !important; }
+  h2, h3, h4 { break-after: avoid; } figure, tr { break-inside: avoid; }
   table { font-size: 8.5pt; } .scroll { overflow: visible; }
 }
 """
@@ -179,5 +179,5 @@ def document(title: str, trace: dict, sections: list[tuple[str, str, str]]) -> s
             f'<meta name="handbook-version" content="{esc(trace["version"])}">'
             f'<meta name="spec-sha256" content="{esc(trace["spec_sha256"])}">'
             f"<title>{esc(title)}</title><style>{css}</style></head><body><header>{block}<h1>{esc(title)}</h1>"
-            f"<nav><ol>{toc}</ol></nav></header><main>{body}</main>"
+            f"<nav><ul>{toc}</ul></nav></header><main>{body}</main>"
             f'<footer class="trace" id="trace-bottom">{esc(line)}</footer></body></html>\n')

@@ -3,6 +3,7 @@ changed first), each designed circuit (schematic, parts, what binds, margins), l
 BOM, and the warnings and assumptions."""
 from __future__ import annotations
 
+from ...core.units import readable
 from ...design.bom import SHEETS
 from ...design.schema import TABLES
 from ...design.spec import OUTPUTS
@@ -32,7 +33,7 @@ def title(table_name: str) -> str:
 def _param_row(t: str, p, used, given: dict) -> list[str]:
     mine = value(f"spec.{t}.{p.name}", used, p.unit)
     default = "—" if p.default is None else value(f"default.{t}.{p.name}", p.default, p.unit)
-    return [f"<code>{esc(p.name)}</code>", mine, default, esc(p.meaning), "yes" if p.name in given else ""]
+    return [f"<code>{esc(p.name)}</code>", mine, default, esc(readable(p.meaning)), "yes" if p.name in given else ""]
 
 
 def spec_section(ctx) -> str:
@@ -70,8 +71,8 @@ def parts_table(rows: list[dict]) -> str:
     stress it carries, the share of the rating that stress uses."""
     tol = lambda x: "" if x is None else f"±{x * 100:g} %"  # noqa: E731
     return table(["designator", "part", "value", "tolerance", "rating (worst-case stress)", "stress / rating"],
-                 [[esc(r["designator"]), esc(r["part"]), esc(r["value_text"]), tol(r["tolerance"]), esc(r["rating_text"]),
-                   _rating_use(r)] for r in rows], (2, 5))
+                 [[esc(r["designator"]), esc(r["part"]), esc(r["value_text"]), tol(r["tolerance"]),
+                   esc(readable(r["rating_text"])), _rating_use(r)] for r in rows], (2, 5))
 
 
 def _schematic(t: str, result) -> str:
@@ -160,8 +161,8 @@ def notes_section(ctx) -> str:
                if warned else "<p>None: no design warned.</p>")
     out.append("<h3>Assumptions made</h3><p>Keys whose default is the handbook's assumption, not a datasheet's "
                "figure (check them against your parts), with the value this report used:</p>")
-    out.append(table(["key", "value used", "why"], [[f"<code>{esc(k)}</code>", v, esc(w)] for k, v, w in assumptions(ctx)],
-                     (1,)))
+    out.append(table(["key", "value used", "why"],
+                     [[f"<code>{esc(k)}</code>", v, esc(readable(w))] for k, v, w in assumptions(ctx)], (1,)))
     out.append("<p>Further: the designs take every part at its tolerance corners and the datasheets' limits; "
                "SPICE models are written from the datasheets' figures (no vendor macro-model).</p>")
     tr = ctx.trace
