@@ -89,6 +89,14 @@ def test_each_example_gives_one_report_of_its_tables(example, tmp_path):
                 assert set(shown[f"spec.{table}.{key}"]) == {float(v)}, f"spec.{table}.{key}"
 
 
+def test_a_spec_of_only_class_d_gives_one_file_of_that_table(tmp_path):
+    spec = tmp_path / "amp.toml"
+    spec.write_text("[class_d]\n")
+    page = _report(spec, tmp_path / "amp.html", "--no-spice")
+    assert 'id="circuit-class_d"' in page and page.count('id="circuit-') == 1
+    assert "<h3>[class_d]</h3>" in page and "[converter]" not in page and "A3-L1" in page and "A2-R7" not in page
+
+
 def test_bad_specs_exit_as_design_does_and_write_nothing(tmp_path):
     for text, code, needle in (("[commutation]\nrpm_mni = 900\n", 2, "did you mean commutation.rpm_min"),
                                ("[clas_d]\n", 2, "did you mean [class_d]"),
