@@ -1,6 +1,6 @@
 """Speed and proof of the design engine, measured once and written to book/design/benchmark.json.
 
-Usage: python tools/benchmark.py [--wide-only]
+Usage: python tools/benchmark.py [--wide-only | --report]
 Measures: one `python -m handbook design` run from the shell (wall time, median of 5); each design against
 its exhaustive enumeration; the limiter network's exact search against exhaustive enumeration
 (tests/oracles.py: every network, every corner from the node equations) on 200 generated specifications with
@@ -8,7 +8,8 @@ reduced series; the search on 520 wide generated specifications (E24..E192, ever
 every answer, each design held at every corner of the oracle and against the exact reference of
 tests/exact_limiter.py, the proof flags counted); and the full-E96
 default with the enumeration's time extrapolated from a measured sample. Not a test (timings depend on the
-machine); the book shows the committed results.
+machine); the book shows the committed results. ``--report`` only times `python -m handbook report` on the
+template spec (HTML with SPICE, PDF, HTML without SPICE; one run each) and prints it, writing nothing.
 """
 import json
 import math
@@ -148,7 +149,26 @@ def limiter_network() -> dict:
             "full_enumeration_s_extrapolated": per_network * networks}
 
 
+def report_times() -> dict:
+    """Wall time of `python -m handbook report` on `design --template`'s spec: HTML, PDF, HTML with --no-spice."""
+    out = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        spec = Path(tmp) / "template.toml"
+        spec.write_text(subprocess.run([sys.executable, "-m", "handbook", "design", "--template"], check=True,
+                                       capture_output=True, text=True).stdout)
+        for name, extra in (("html_s", ["-o", "r.html"]), ("pdf_s", ["-o", "r.pdf"]),
+                            ("html_no_spice_s", ["-o", "n.html", "--no-spice"])):
+            t = time.perf_counter()
+            subprocess.run([sys.executable, "-m", "handbook", "report", str(spec), *extra], check=True,
+                           capture_output=True, cwd=tmp)
+            out[name] = round(time.perf_counter() - t, 1)
+    return out
+
+
 def main():
+    if "--report" in sys.argv:
+        print(json.dumps(report_times(), indent=1))
+        return
     if "--wide-only" in sys.argv:  # only the wide specs again, written into the JSON beside the rest
         path = ROOT / "book" / "design" / "benchmark.json"
         out = json.loads(path.read_text())

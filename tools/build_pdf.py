@@ -8,13 +8,15 @@ line saying why when Chromium is missing or a step fails.
 from __future__ import annotations
 
 import re
-import shutil
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
 import yaml
+
+from handbook.report.chromium import chromium  # noqa: F401 (the browser check finds Chromium through this name)
+from handbook.report.chromium import print_pdf as print_pdf_with
 
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "_build" / "pdf" / "handbook.pdf"
@@ -40,11 +42,6 @@ PRINT_CSS = """
   section > h1 { break-before: page; }
 }
 """
-
-
-def chromium() -> str | None:
-    """Debian's Chromium (or another Chromium on the path), or None."""
-    return next((p for p in map(shutil.which, ("chromium", "chromium-browser", "google-chrome")) if p), None)
 
 
 def offline_config(folder: Path) -> Path:
@@ -79,16 +76,10 @@ def build_html(work: Path) -> Path:
 
 
 def print_pdf(page: Path, pdf: Path, browser: str) -> None:
-    pdf.parent.mkdir(parents=True, exist_ok=True)
-    pdf.unlink(missing_ok=True)
-    with tempfile.TemporaryDirectory() as profile:
-        out = subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
-                              "--disable-background-networking", "--disable-component-update", f"--user-data-dir={profile}",
-                              f"--virtual-time-budget={BUDGET_MS}", "--run-all-compositor-stages-before-draw",
-                              "--generate-pdf-document-outline", "--no-pdf-header-footer",
-                              f"--print-to-pdf={pdf}", page.as_uri()], capture_output=True, text=True, timeout=900)
+    """The page printed by Chromium the way the design report is (:func:`handbook.report.chromium.print_pdf`)."""
+    stderr = print_pdf_with(page, pdf, browser, budget_ms=BUDGET_MS)
     if not pdf.exists() or pdf.stat().st_size < 10_000:
-        raise SystemExit(f"Chromium printed no PDF:\n{out.stderr[-2000:]}")
+        raise SystemExit(f"Chromium printed no PDF:\n{stderr[-2000:]}")
 
 
 def main(argv: list[str]) -> int:

@@ -292,6 +292,12 @@ def _spice_value(key: str, value) -> str:
     return eng(value, unit) + (" rms" if key.startswith("ripple") else "")
 
 
+def cmd_report(args) -> int:
+    from .report.design_report.command import run
+
+    return run(args)
+
+
 def cmd_spice(args) -> int:
     from .spice import checks as spice
 
@@ -406,6 +412,14 @@ def main(argv=None) -> int:
                    help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
     p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")
     p.set_defaults(func=cmd_design)
+    p = sub.add_parser("report", help="one self-contained file a reviewer can sign (HTML or PDF): the spec, each "
+                       "designed circuit, its calculations, worst cases, SPICE, losses, BOM, warnings")
+    p.add_argument("spec", help="the TOML spec, as `design` reads it (exit 2 on a bad key or value, 3 when a table "
+                   "cannot be met; nothing is written then)")
+    p.add_argument("-o", "--out", required=True, metavar="FILE.html|FILE.pdf",
+                   help="the report: .html (opens offline) or .pdf (printed by Chromium; exit 4 without it)")
+    p.add_argument("--no-spice", action="store_true", help="leave out the SPICE confirmation (faster)")
+    p.set_defaults(func=cmd_report)
     p = sub.add_parser("spice", help="every circuit's SPICE checks: equation against ngspice")
     p.add_argument("--json", action="store_true",
                    help="a JSON list of id, circuit, quantity, equation, spice, rel_diff, expected_difference, residual, "

@@ -1,0 +1,172 @@
+"""The design report's sections read straight from the spec, the results and the BOM: the spec (what the reader
+changed first), each designed circuit (schematic, parts, what binds, margins), losses and temperatures with the
+BOM, and the warnings and assumptions."""
+from __future__ import annotations
+
+from ...core.units import readable
+from ...design.bom import SHEETS
+from ...design.schema import TABLES
+from ...design.spec import OUTPUTS
+from .page import esc, inline_svg, note, table, value
+
+#: per design table: the results that are losses, temperatures and thermal ratings (section 6)
+LOSSES = {"current_limiter": ("p_r7", "r7_rating", "r7_package", "v_drop", "p_r14", "p_zener", "i_zener_min"),
+          "class_d": ("efficiency", "thermal_basis", "p_thermal", "p_dissipation", "theta_sa_required", "t_junction",
+                      "needs_heat_sink", "t_junction_no_sink"),
+          "converter": ("core_loss", "winding_loss", "temperature_rise", "saturation_margin", "b_peak_min_area")}
+#: how the section reads its margins and ratings, as MathML (no script typesets it: the browser does)
+MARGIN_MATH = ('<p>A margin is how far the worst corner stays inside its limit, as a fraction of the limit; a part\'s '
+               'rating is used by its worst-case stress:</p><math display="block"><mi>m</mi><mo>=</mo><mfrac><mrow>'
+               '<mo>|</mo><mtext>limit</mtext><mo>&#x2212;</mo><mtext>worst</mtext><mo>|</mo></mrow><mtext>limit</mtext></mfrac><mo>,</mo>'
+               '<mspace width="2em"/><mi>u</mi><mo>=</mo><mfrac><msub><mi>S</mi><mtext>worst</mtext></msub>'
+               '<msub><mi>R</mi><mtext>rated</mtext></msub></mfrac></math>')
+#: results shown apart from the results table (what binds, in its own line; warnings in section 7)
+APART = ("binding", "warnings")
+
+
+def title(table_name: str) -> str:
+    """A design table's heading: its BOM sheet and circuit ("A3 LM4651/LM4652 class-D amplifier [class_d]")."""
+    sheet, circuit = SHEETS[table_name]
+    return f"{sheet} {circuit} [{table_name}]"
+
+
+def _param_row(t: str, p, used, given: dict) -> list[str]:
+    mine = value(f"spec.{t}.{p.name}", used, p.unit)
+    default = "—" if p.default is None else value(f"default.{t}.{p.name}", p.default, p.unit)
+    return [f"<code>{esc(p.name)}</code>", mine, default, esc(readable(p.meaning)), "yes" if p.name in given else ""]
+
+
+def spec_section(ctx) -> str:
+    """Section 1: per table the spec asked for, the keys whose value differs from the schema's default (what the
+    reader changed), then every key with the value used, folded."""
+    out = [f"<p>Tables designed: {', '.join(f'<code>[{esc(t)}]</code>' for t in ctx.spec.asked)}"
+           + ("" if ctx.spec.written else " (the spec wrote none: all four, at the notes' defaults)") + ". "
+           "Values in SI units (speeds in rpm, temperatures in °C, tolerances as fractions).</p>"]
+    header = ["key", "value used", "default", "meaning", "written"]
+    for t in ctx.spec.asked:
+        given, used = ctx.spec[t], ctx.spec.tables[t]
+        changed = [p for p in TABLES[t] if p.name in given and used[p.name] != p.default]
+        out.append(f"<h3>[{esc(t)}]</h3>")
+        if changed:
+            out.append(f"<p>What you changed ({len(changed)} of {len(TABLES[t])} keys):</p>")
+            out.append(table(header, [_param_row(t, p, used[p.name], given) for p in changed], (1, 2)))
+        else:
+            out.append("<p>Nothing changed: every key at the handbook's default"
+                       + (f" ({len(given)} written with the default value)" if given else "") + ".</p>")
+        rest = [_param_row(t, p, used[p.name], given) for p in TABLES[t] if p not in changed]
+        out.append(f"<details><summary>The other {len(rest)} keys of [{esc(t)}], as used</summary>"
+                   f"{table(header, rest, (1, 2))}</details>")
+    return "".join(out)
+
+
+def _rating_use(r: dict) -> str:
+    rating = next((r[k] for k in ("power_rating", "voltage_rating", "current_rating") if r[k]), None)
+    if rating is None or r["stress"] is None:
+        return ""
+    return f"{r['stress'] / rating:.1%}".replace("%", " %")
+
+
+def parts_table(rows: list[dict]) -> str:
+    """The BOM rows of one circuit as a table: designator, part, value, tolerance, rating and the worst-case
+    stress it carries, the share of the rating that stress uses."""
+    tol = lambda x: "" if x is None else f"±{x * 100:g} %"  # noqa: E731
+    return table(["designator", "part", "value", "tolerance", "rating (worst-case stress)", "stress / rating"],
+                 [[esc(r["designator"]), esc(r["part"]), esc(r["value_text"]), tol(r["tolerance"]),
+                   esc(readable(r["rating_text"])), _rating_use(r)] for r in rows], (2, 5))
+
+
+def _schematic(t: str, result) -> str:
+    from ...spice import designed
+
+    try:
+        svg = designed.svg(designed.drawing(t, result))
+    except Exception as exc:  # a drawing that fails must not lose the report: say so in its place
+        return note(f"schematic not drawn: {type(exc).__name__}: {exc}")
+    return (f'<figure class="schematic">{inline_svg(svg, f"sch-{t}")}<figcaption>The designed circuit with the chosen '
+            f"values (the circuit SPICE simulates).</figcaption></figure>")
+
+
+def results_table(t: str, result) -> str:
+    """Every result the design reports (label, value with unit), :data:`~handbook.design.spec.OUTPUTS`' order."""
+    return table(["result", "value"], [[esc(o.label), value(f"{t}.{o.key}", getattr(result, o.key), o.unit)]
+                                       for o in OUTPUTS[t] if o.key not in APART], (1,))
+
+
+def margins_table(t: str, result) -> str:
+    """The design's margins: its results that are margins (fractions of a limit)."""
+    rows = [[esc(o.label), value(f"{t}.{o.key}", getattr(result, o.key), o.unit)]
+            for o in OUTPUTS[t] if "margin" in o.key and o.unit == "%"]
+    return table(["margin", "value"], rows, (1,)) if rows else ""
+
+
+def circuits_section(ctx) -> str:
+    """Section 2: for each designed circuit its schematic, its parts with ratings, what binds and the margins."""
+    out = [MARGIN_MATH]
+    for t, result in ctx.designed.items():
+        sheet = SHEETS[t][0]
+        out += [f'<h3 id="circuit-{t}">{esc(title(t))}</h3>', _schematic(t, result),
+                f"<p><b>What binds:</b> {esc(str(result.binding))}</p>",
+                "<h4>Chosen parts and their ratings</h4>", parts_table([r for r in ctx.bom if r["sheet"] == sheet]),
+                "<h4>Margins</h4>", margins_table(t, result) or note("this design states no margin as a fraction"),
+                f"<details open><summary>Every result of [{esc(t)}]</summary>{results_table(t, result)}</details>"]
+    return "".join(out)
+
+
+def losses_section(ctx) -> str:
+    """Section 6: losses, temperatures and thermal ratings of each design (R7 in a stall, the LM4652 at its
+    thermal basis, the coil), the ambient each is taken at, then the whole BOM."""
+    out = []
+    for t, result in ctx.designed.items():
+        out.append(f"<h3>{esc(title(t))}</h3>")
+        keys = LOSSES.get(t)
+        if not keys:
+            out.append(note("the timing capacitors carry no loss worth stating (pin currents of microamps)"))
+            continue
+        units = {o.key: o for o in OUTPUTS[t]}
+        rows = [[esc(units[k].label), value(f"{t}.{k}", getattr(result, k), units[k].unit)] for k in keys]
+        if "t_ambient" in result.spec:
+            rows.insert(0, ["ambient (spec)", value(f"spec.{t}.t_ambient", result.spec["t_ambient"], "C")])
+        out.append(table(["loss or temperature", "value"], rows, (1,)))
+    out.append("<h3>Bill of materials</h3>")
+    out.append(_bom_html(ctx.bom) if ctx.bom else note("nothing designed"))
+    return "".join(out)
+
+
+def _bom_html(rows: list[dict]) -> str:
+    tol = lambda x: "" if x is None else f"±{x * 100:g} %"  # noqa: E731
+    return table(["designator", "qty", "part", "value", "tolerance", "rating (worst-case stress)",
+                  "technology; package; tempco", "reason"],
+                 [[esc(r["designator"]), str(r["quantity"]), esc(r["part"]), esc(r["value_text"]), tol(r["tolerance"]),
+                   esc(r["rating_text"]), esc("; ".join(x for x in (r["technology"], r["package"], r["tempco"]) if x)),
+                   esc(r["reason"])] for r in rows], (1, 3))
+
+
+def assumptions(ctx) -> list[tuple[str, str, str]]:
+    """(table.key, value used, why) of every key of the asked tables whose default is an assumption of the
+    handbook's (the schema says so), with the value this spec used."""
+    out = []
+    for t in ctx.spec.asked:
+        for p in TABLES[t]:
+            why = p.cite if "assumption" in p.cite else p.meaning if "assumption" in p.meaning else ""
+            if why:
+                out.append((f"{t}.{p.name}", value(f"spec.{t}.{p.name}", ctx.spec.tables[t][p.name], p.unit), why))
+    return out
+
+
+def notes_section(ctx) -> str:
+    """Section 7: every design's warnings, SPICE's, the assumptions made, and what the report was made from."""
+    out = ["<h3>Warnings</h3>"]
+    warned = [(t, w) for t, r in ctx.designed.items() for w in r.warnings] + list(ctx.spice_warnings)
+    out.append("<ul>" + "".join(f'<li class="warn"><code>[{esc(t)}]</code> {esc(w)}</li>' for t, w in warned) + "</ul>"
+               if warned else "<p>None: no design warned.</p>")
+    out.append("<h3>Assumptions made</h3><p>Keys whose default is the handbook's assumption, not a datasheet's "
+               "figure (check them against your parts), with the value this report used:</p>")
+    out.append(table(["key", "value used", "why"],
+                     [[f"<code>{esc(k)}</code>", v, esc(readable(w))] for k, v, w in assumptions(ctx)], (1,)))
+    out.append("<p>Further: the designs take every part at its tolerance corners and the datasheets' limits; "
+               "SPICE models are written from the datasheets' figures (no vendor macro-model).</p>")
+    tr = ctx.trace
+    out.append(table(["made from", ""], [["handbook version", esc(tr["version"])], ["spec file", esc(tr["spec_file"])],
+                                         ["spec SHA-256 (the spec as read, defaults filled in)", esc(tr["spec_sha256"])],
+                                         ["tables asked", esc(", ".join(ctx.spec.asked))]]))
+    return "".join(out)

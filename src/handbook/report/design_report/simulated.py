@@ -1,0 +1,118 @@
+"""The design report's SPICE section (section 5): each design confirmed by ngspice at its worst corners
+(:func:`handbook.spice.checks.confirm_rows`), and where a run is cheap the waveform or response of this very
+circuit: the class-D filter's response with the spec's load (one AC run), the converter's coil current with the
+designed L1 and R1 (one transient), the limiter's output as the motor current ramps through the trip (one
+transient). Skipped with the reason when ngspice is missing."""
+from __future__ import annotations
+
+from ...core.units import eng
+from .page import esc, figure_svg, note, table
+from .sections import title
+
+
+def _unit(u: str) -> str:
+    return u.replace("ohm", "Ω")
+
+
+def confirm_table(rows: list[dict]) -> str:
+    """SPICE's figures beside the design's own: quantity, design, SPICE, difference, tolerance, verdict."""
+    return table(["quantity", "design (worst corner)", "SPICE (worst corner)", "difference", "tolerance", "verdict"],
+                 [[esc(r["quantity"]), esc(eng(r["equation"], _unit(r["unit"]))), esc(eng(r["spice"], _unit(r["unit"]))),
+                   f"{r['rel_diff']:.3%}".replace("%", " %"), f"±{r['rtol']:.2%}".replace("%", " %"),
+                   f'<span class="{"ok" if r["agrees"] else "warn"}">{esc(r["verdict"])}</span>'] for r in rows],
+                 (1, 2, 3, 4))
+
+
+def _axes(xlabel: str, ylabel: str, xunit: str, yunit: str, xlog: bool = False):
+    from matplotlib.figure import Figure
+
+    from ..figures import format_axis
+
+    fig = Figure(figsize=(6.4, 2.8))
+    ax = fig.add_subplot()
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    format_axis(ax, "x", xunit, xlog)
+    format_axis(ax, "y", yunit)
+    ax.grid(True, which="both", lw=0.3)
+    return fig, ax
+
+
+def _class_d(result) -> str:
+    from ...spice import class_d
+
+    s = result.spec
+    p = {"l_out": result.l_out, "c_out": result.c_out, "supply": s["supply"], "f_sw": result.f_sw, "f_audio": s["f_audio"]}
+    got = class_d.response((s["r_load"],), p)
+    fig, ax = _axes("frequency", "|H| (dB)", "Hz", "", xlog=True)
+    ax.plot(got["f"], got[s["r_load"]], label=f"R_L = {eng(s['r_load'], 'Ω')}")
+    ax.axvline(result.f_corner, color="0.4", ls=":", label=f"corner {eng(result.f_corner, 'Hz')}")
+    ax.axvline(s["f_audio"], color="#c0392b", ls="--", label=f"audio band {eng(s['f_audio'], 'Hz')}")
+    ax.legend(fontsize=7)
+    return figure_svg(fig, "sim-class_d", "The output filter's response with the designed L and C_BYP and the spec's "
+                      "load (ngspice AC run).")
+
+
+def _converter(result) -> str:
+    from ...design.converter import source_params
+    from ...spice import converter
+
+    w = converter.waveform({**converter.defaults(), **source_params(result.spec), "l1": result.l1_nominal,
+                            "r1": result.r1_part})
+    fig, ax = _axes("time from a switch-on", "coil current", "s", "A")
+    ax.plot(w["t"], w["i"], label="i(L1)")
+    ax.axhline(result.i_peak, color="0.4", ls=":", label=f"eq 5 peak {eng(result.i_peak, 'A')}")
+    ax.axhline(result.i_peak_max, color="#c0392b", ls="--", label=f"highest peak {eng(result.i_peak_max, 'A')}")
+    ax.legend(fontsize=7)
+    return figure_svg(fig, "sim-converter", "The coil current over two cycles with the coil as wound (L1 nominal) and "
+                      "R1 as bought, at the spec's lowest supply (ngspice transient).")
+
+
+def _limiter(result) -> str:
+    from ...spice import designed, limiter
+
+    w = limiter.waveforms(designed.circuit("current_limiter", result), {"i": "i(VAM)", "out": "v(out)"})
+    s = result.spec
+    fig, ax = _axes("motor current", "op-amp output", "A", "V")
+    ax.plot(w["i"], w["out"], label="output, nominal parts")
+    ax.axvspan(result.i_trip_min, result.i_trip_max, color="#4878a8", alpha=0.15, label="trip over every corner")
+    for x, lab in ((s["i_no_trip"], "i_no_trip"), (s["i_must_trip"], "i_must_trip")):
+        ax.axvline(x, color="#c0392b", ls="--", lw=1)
+        ax.annotate(lab, (x, 0.5), rotation=90, fontsize=7, xytext=(2, 0), textcoords="offset points")
+    ax.legend(fontsize=7)
+    return figure_svg(fig, "sim-current_limiter", "The limiter's output as the motor current ramps through the trip, "
+                      "nominal parts (ngspice transient); the band is the design's trip over every corner.")
+
+
+#: table -> the cheap waveform of its circuit
+WAVES = {"class_d": _class_d, "converter": _converter, "current_limiter": _limiter}
+
+
+def section(ctx) -> str:
+    """Section 5 (and the SPICE warnings, appended to ``ctx.spice_warnings``)."""
+    from ...spice import checks, runner
+
+    if ctx.no_spice:
+        return note("SPICE confirmation skipped: --no-spice was given")
+    if runner.available() is None:
+        return note(f"SPICE confirmation skipped: {runner.why_unavailable()}")
+    out = []
+    for t, result in ctx.designed.items():
+        out.append(f"<h3>{esc(title(t))}</h3>")
+        try:
+            if t in checks.DESIGN_CHECKS:
+                figures = checks.confirm({t: result})[t]
+                out.append(confirm_table(checks.confirm_rows(t, result, figures)))
+                if "meets_spec" in figures:
+                    corners = f" ({figures['corners']} corners simulated)" if "corners" in figures else ""
+                    out.append(f"<p>SPICE's worst corners meet the spec: <b>{'yes' if figures['meets_spec'] else 'no'}"
+                               f"</b>{corners}.</p>")
+                ctx.spice_warnings.extend((t, f"SPICE: {w}") for w in checks.warnings(t, figures))
+            else:
+                out.append(note("no corner confirmation for this circuit (SPICE checks its equations in the book); "
+                                "its waveform below is simulated with the designed parts"))
+            if t in WAVES:
+                out.append(WAVES[t](result))
+        except (checks.SpiceError, checks.SpiceUnavailable) as exc:
+            out.append(note(f"SPICE run failed: {exc}"))
+    return "".join(out)

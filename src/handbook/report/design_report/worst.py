@@ -1,0 +1,117 @@
+"""The design report's worst-case analysis (section 4), written against
+``handbook.design.worstcase.analyse(table, result, n=100_000, seed=1) -> WorstCase``: per quantity the extreme
+value (EVA), root-sum-square (RSS) and Monte Carlo bounds beside its limits and its yield, a histogram of the
+Monte Carlo samples, the distributions assumed, the sensitivity ranking and the drift sentences. Used when that
+module is in this build; otherwise the section is one line saying so."""
+from __future__ import annotations
+
+from .page import esc, figure_svg, note, table, value
+from .sections import title
+
+#: the Monte Carlo run the report asks for
+N, SEED = 100_000, 1
+
+
+def analyser():
+    """``handbook.design.worstcase.analyse``, or None when this build has no worst-case module."""
+    try:
+        from ...design import worstcase
+    except ImportError:
+        return None
+    return worstcase.analyse
+
+
+def _pair(key: str, low, high, unit: str) -> str:
+    if low is None and high is None:
+        return "—"
+    shown = lambda k, v: "—" if v is None else value(f"{key}.{k}", v, unit)  # noqa: E731
+    return f"{shown('low', low)} … {shown('high', high)}"
+
+
+def _share(x) -> str:
+    return "—" if x is None else f"{x:.2%}".replace("%", " %")
+
+
+def quantities_table(t: str, wc) -> str:
+    """One row per quantity: nominal, EVA, RSS and Monte Carlo bounds, the limits, the yield."""
+    rows = []
+    for q in wc.quantities:
+        key = f"wc.{t}.{q.key}"
+        rows.append([esc(q.label), value(f"{key}.nominal", q.nominal, q.unit),
+                     _pair(f"{key}.eva", q.eva_low, q.eva_high, q.unit), _pair(f"{key}.rss", q.rss_low, q.rss_high, q.unit),
+                     _pair(f"{key}.mc", q.mc_low, q.mc_high, q.unit), _pair(f"{key}.limit", q.limit_low, q.limit_high, q.unit),
+                     _share(wc.yields.get(q.key))])
+    return table(["quantity", "nominal", "extreme value (EVA)", "RSS", "Monte Carlo", "limits", "yield"], rows, (1, 6))
+
+
+def histogram(t: str, q, samples) -> str:
+    """The Monte Carlo samples of one quantity as a histogram, with the nominal, the EVA bounds and the limits."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    from ..figures import format_axis
+
+    scale, unit = (100.0, "%") if q.unit == "%" else (1.0, q.unit.replace("ohm", "Ω"))
+    x = np.asarray(samples, dtype=float) * scale
+    fig = Figure(figsize=(6.4, 2.4))
+    ax = fig.add_subplot()
+    ax.hist(x[np.isfinite(x)], bins=80, color="#4878a8")
+    ax.axvline(q.nominal * scale, color="k", lw=1, label="nominal")
+    for k, v in enumerate(b for b in (q.eva_low, q.eva_high) if b is not None):
+        ax.axvline(v * scale, color="0.4", ls=":", lw=1, label="EVA" if k == 0 else None)
+    for k, v in enumerate(b for b in (q.limit_low, q.limit_high) if b is not None):
+        ax.axvline(v * scale, color="#c0392b", ls="--", lw=1.2, label="limit" if k == 0 else None)
+    ax.set_xlabel(q.label[:70])
+    ax.set_ylabel("samples")
+    if unit != "%":
+        format_axis(ax, "x", unit)
+    ax.legend(fontsize=7, loc="upper right")
+    return figure_svg(fig, f"wc-{t}-{q.key}", f"{q.label}: {len(x):,} Monte Carlo samples")
+
+
+def one(t: str, wc) -> str:
+    """The worst-case analysis of one design, as HTML."""
+    out = [f"<h3>{esc(title(t))}</h3>",
+           f"<p>Monte Carlo: {wc.n:,} samples, seed {wc.seed}; every limit met together in "
+           f"{_share(wc.yield_all)} of them.</p>", quantities_table(t, wc)]
+    out += [histogram(t, q, wc.samples[q.key]) for q in wc.quantities if q.key in wc.samples]
+    out.append("<h4>Distributions assumed</h4>")
+    out.append(table(["part", "distribution", "low", "high", "source"],
+                     [[esc(d.part), esc(d.kind), f"{d.low:.6g}", f"{d.high:.6g}", esc(d.cite)] for d in wc.distributions],
+                     (2, 3)))
+    out.append("<h4>Sensitivity: what the spread comes from</h4>")
+    out.append(table(["source", "share of the spread", "worst margin if its spread were halved", "yield if halved"],
+                     [[esc(s.source), _share(s.share), _share(s.margin_if_halved), _share(s.yield_if_halved)]
+                      for s in wc.sensitivity], (1, 2, 3)))
+    if wc.drift:
+        out.append("<h4>Drift</h4><ul>" + "".join(f"<li>{esc(s)}</li>" for s in wc.drift) + "</ul>")
+    return "".join(out)
+
+
+def section(ctx, analyse=None) -> str:
+    """Section 4: each designed table's worst-case analysis, or one line when this build has none.
+
+    Parameters
+    ----------
+    ctx : Context
+        The report's context (the designed tables).
+    analyse : callable, optional
+        ``analyse(table, result, n=, seed=)``; default :func:`analyser`'s (tests pass a stand-in).
+
+    Returns
+    -------
+    str
+        The section's HTML.
+    """
+    analyse = analyse or analyser()
+    if analyse is None:
+        return note("worst-case analysis not in this build (handbook.design.worstcase is not installed)")
+    out = []
+    for t, result in ctx.designed.items():
+        try:
+            wc = analyse(t, result, n=N, seed=SEED)
+        except Exception as exc:  # another module's failure is reported in its place, never loses the report
+            out.append(f"<h3>{esc(title(t))}</h3>" + note(f"worst-case analysis failed: {type(exc).__name__}: {exc}"))
+            continue
+        out.append(one(t, wc))
+    return "".join(out)
