@@ -164,21 +164,10 @@ def test_partial_spec_reports_only_its_table_with_worst_case_and_spice(class_d_p
         assert "SPICE confirmation skipped: ngspice is not installed" in page
 
 
-def test_missing_modules_leave_one_line(monkeypatch):
-    from handbook.report import design_report
-    from handbook.report.design_report import worst
-
-    monkeypatch.setitem(sys.modules, "handbook.report.calcsheet", None)  # import fails as if absent
-    monkeypatch.setitem(sys.modules, "handbook.design.worstcase", None)
-    ctx = SimpleNamespace(designed={"class_d": object()})
-    assert "calculation sheet not in this build" in design_report.calc_section(ctx)
-    assert "worst-case analysis not in this build" in worst.section(ctx)
-
-
 #: run in the page once loaded: what Chromium made of it, as JSON in a <pre> at the end of the body
 PROBE = """<script>window.addEventListener("load", () => {
   const box = e => { const r = e.getBoundingClientRect(); return r.width > 0 && r.height > 0; };
-  const out = {sections: [...document.querySelectorAll("section")].map(s => s.id),
+  const out = {sections: [...document.querySelectorAll("body > section, main > section")].map(s => s.id),
     images: [...document.images].map(i => i.complete && i.naturalWidth > 0),
     svgs: [...document.querySelectorAll("figure svg")].map(box),
     math: [...document.querySelectorAll("math")].map(m => m.getBoundingClientRect().height)};

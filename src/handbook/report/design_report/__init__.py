@@ -4,8 +4,8 @@ self-contained file a reviewer can sign, built from a spec. Sections, for the ta
 
 1. the spec: what the reader changed against the defaults, then every other key (folded);
 2. each designed circuit: its schematic with the chosen values, its parts with ratings, what binds, the margins;
-3. the calculation sheet (``handbook.report.calcsheet``, when this build has it);
-4. the worst-case analysis (``handbook.design.worstcase``, when this build has it; :mod:`.worst`);
+3. the calculation sheet (``handbook.report.calcsheet``);
+4. the worst-case analysis (``handbook.design.worstcase``; :mod:`.worst`);
 5. SPICE's confirmation at the worst corners with this circuit's waveforms (:mod:`.simulated`);
 6. losses and temperatures, and the BOM;
 7. warnings, assumptions, and what the report was made from.
@@ -35,12 +35,9 @@ class Context:
 
 
 def calc_section(ctx) -> str:
-    """Section 3: the calculation sheet of each design (``handbook.report.calcsheet``), or one line saying this
-    build has none."""
-    try:
-        from .. import calcsheet
-    except ImportError:
-        return page.note("calculation sheet not in this build")
+    """Section 3: the calculation sheet of each design (``handbook.report.calcsheet``)."""
+    from .. import calcsheet
+
     return "".join(f"<h3>{page.esc(sections.title(t))}</h3>{calcsheet.html(calcsheet.steps(t, r))}"
                    for t, r in ctx.designed.items())
 
@@ -81,7 +78,7 @@ def build(ctx: Context, analyse=None) -> str:
     ctx : Context
         :func:`context`'s.
     analyse : callable, optional
-        The worst-case analysis to use (default ``handbook.design.worstcase.analyse`` if this build has it).
+        The worst-case analysis to use (default ``handbook.design.worstcase.analyse``).
 
     Returns
     -------

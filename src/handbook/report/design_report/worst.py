@@ -1,8 +1,7 @@
 """The design report's worst-case analysis (section 4), written against
 ``handbook.design.worstcase.analyse(table, result, n=100_000, seed=1) -> WorstCase``: per quantity the extreme
 value (EVA), root-sum-square (RSS) and Monte Carlo bounds beside its limits and its yield, a histogram of the
-Monte Carlo samples, the distributions assumed, the sensitivity ranking and the drift sentences. Used when that
-module is in this build; otherwise the section is one line saying so."""
+Monte Carlo samples, the distributions assumed, the sensitivity ranking and the drift sentences."""
 from __future__ import annotations
 
 from .page import esc, figure_svg, note, table, value
@@ -10,15 +9,6 @@ from .sections import title
 
 #: the Monte Carlo run the report asks for
 N, SEED = 100_000, 1
-
-
-def analyser():
-    """``handbook.design.worstcase.analyse``, or None when this build has no worst-case module."""
-    try:
-        from ...design import worstcase
-    except ImportError:
-        return None
-    return worstcase.analyse
 
 
 def _pair(key: str, low, high, unit: str) -> str:
@@ -89,23 +79,23 @@ def one(t: str, wc) -> str:
 
 
 def section(ctx, analyse=None) -> str:
-    """Section 4: each designed table's worst-case analysis, or one line when this build has none.
+    """Section 4: each designed table's worst-case analysis.
 
     Parameters
     ----------
     ctx : Context
         The report's context (the designed tables).
     analyse : callable, optional
-        ``analyse(table, result, n=, seed=)``; default :func:`analyser`'s (tests pass a stand-in).
+        ``analyse(table, result, n=, seed=)``; default ``handbook.design.worstcase.analyse`` (tests pass a
+        stand-in).
 
     Returns
     -------
     str
         The section's HTML.
     """
-    analyse = analyse or analyser()
     if analyse is None:
-        return note("worst-case analysis not in this build (handbook.design.worstcase is not installed)")
+        from ...design.worstcase import analyse
     out = []
     for t, result in ctx.designed.items():
         try:
