@@ -13,9 +13,11 @@ import pytest
 
 #: test files kept on one worker because their module-scoped fixture is expensive to build twice
 TOGETHER = ("tests/test_browser.py", "tests/test_pdf.py", "tests/design/converter/", "tests/report/test_plots.py",
-            "tests/design/limiter/test_limiter_exact_wide.py")  # its last test counts what the others found
+            "tests/design/limiter/test_limiter_exact_wide.py",  # its last test counts what the others found
+            "tests/report/test_design_report.py")  # its reports (template, [class_d]) are built once
 #: units sent first, longest first (measured on the 2-core machine); the rest follow in collection order
 FIRST = ("tests/test_browser.py", "tests/test_pdf.py", "tests/design/limiter/test_limiter_exact_wide.py",
+         "tests/report/test_design_report.py",
          "tests/design/limiter/test_limiter_search.py::test_the_search",
          "tests/design/converter/", "tests/design/limiter/test_limiter_search.py::test_every_design",
          "tests/design/test_fuzz_specs.py")
