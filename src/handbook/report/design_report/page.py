@@ -31,6 +31,7 @@ figcaption { font-size: 12px; color: #444; }
 .note { color: #555; font-style: italic; } .warn { color: #8a1c00; } .ok { color: #145214; }
 details > summary { cursor: pointer; font-weight: bold; margin: 6px 0; }
 math { font-size: 1.05em; }
+.calc-math { margin: 0.9em 0; line-height: 2.2; } .calc-step { margin-bottom: 1.2em; }
 @page { size: A4; margin: 16mm 13mm 20mm 13mm;
         @bottom-left { content: "__FOOTER__"; font-size: 7.5pt; color: #333; }
         @bottom-right { content: "page " counter(page) " of " counter(pages); font-size: 8pt; } }
