@@ -123,13 +123,15 @@ def _quantity(key, label, unit, nominal, spread, lo, hi):
                            mc_low=nominal - spread / 3, mc_high=nominal + spread / 3, limit_low=lo, limit_high=hi)
 
 
-def fake_analyse(table, result, n=100_000, seed=1):
-    """A stand-in with handbook.design.worstcase.analyse's interface: two quantities, their samples."""
+def fake_analyse(table, result, n=100_000, seed=1, yield_all=0.9991):
+    """A stand-in with handbook.design.worstcase.analyse's interface: two quantities, their samples, the yields
+    keyed by limit as the engine keys them."""
     rng = np.random.default_rng(seed)
     qs = [_quantity("f_corner", "output filter corner", "Hz", 1618.0, 120.0, 1200.0, None),
           _quantity("ripple", "switching residue at the load", "V", 0.05, 0.01, None, 0.1)]
     return SimpleNamespace(
-        quantities=qs, yields={"f_corner": 0.9991, "ripple": 1.0}, yield_all=0.9991, n=n, seed=seed,
+        quantities=qs, yields={"corner above 1.2 kHz": yield_all, "ripple_max": 1.0}, yield_all=yield_all, n=n,
+        seed=seed, binding="switching residue at the load",
         samples={q.key: q.nominal + rng.normal(0, (q.eva_high - q.nominal) / 4, 2000) for q in qs},
         distributions=[SimpleNamespace(part="L1", kind="uniform", low=0.9, high=1.1, cite="±10 % inductor")],
         sensitivity=[SimpleNamespace(source="L1 tolerance", share=0.62, margin_if_halved=0.31, yield_if_halved=0.99995)],
@@ -154,6 +156,8 @@ def test_partial_spec_reports_only_its_table_with_worst_case_and_spice(class_d_p
     assert 'id="circuit-class_d"' in page and "circuit-current_limiter" not in page and "[commutation]" not in page
     # the worst-case section, against the interface: every column, a histogram per quantity, the tables
     assert 'data-key="wc.class_d.f_corner.nominal">1.618 kHz<' in page and "99.91 %" in page
+    assert "corner above 1.2 kHz" in page and "least worst-case margin: <b>switching residue" in page
+    assert "Below 99.90 %" not in page  # 99.91 % of the lot: no warning
     assert page.count('id="wc-class_d-') >= 2 and "±10 % inductor" in page and "L1 tolerance" in page
     assert "L1 loses 3 %" in page and "100,000 samples" in page
     from handbook.spice import runner
@@ -162,6 +166,26 @@ def test_partial_spec_reports_only_its_table_with_worst_case_and_spice(class_d_p
         assert "output filter corner with the load" in page and 'id="sim-class_d' in page
     else:
         assert "SPICE confirmation skipped: ngspice is not installed" in page
+
+
+def test_a_low_yield_and_a_failed_analysis_are_warnings():
+    """A lot below 99.9 % is said in section 4 and among section 7's warnings; a worst-case analysis that fails
+    is said in its place and among the warnings, never only as a note."""
+    from handbook.design import spec as specmod
+    from handbook.report import design_report
+
+    spec = specmod.parse({"class_d": {}})
+    ctx = design_report.context(spec, specmod.run_each(spec), "class_d.toml", no_spice=True)
+    page = design_report.build(ctx, analyse=lambda *a, **k: fake_analyse(*a, **k, yield_all=0.95))
+    notes = page[page.index('id="notes"'):]
+    assert "Below 99.90 %" in page and "every limit met by 95.00 %" in notes
+
+    def broken(*a, **k):
+        raise ValueError("no model")
+
+    ctx = design_report.context(spec, specmod.run_each(spec), "class_d.toml", no_spice=True)
+    page = design_report.build(ctx, analyse=broken)
+    assert "worst-case analysis failed: ValueError: no model" in page[page.index('id="notes"'):]
 
 
 #: run in the page once loaded: what Chromium made of it, as JSON in a <pre> at the end of the body

@@ -135,8 +135,11 @@ def limiter_rows(lim) -> list[dict]:
                      tempco="≤ 100 ppm/K (min_margin covers about 1 %)",
                      rating_text=f"{eng(lim.r7_rating, 'W')}: {eng(lim.p_r7, 'W')} holding a stalled motor at "
                                  f"{t_a:g} °C, 50 % derating",
-                     reason=f"{s['r7_series']} value; the smallest that keeps every corner's trip in "
-                            f"{s['i_no_trip']:g} to {s['i_must_trip']:g} A; drops {eng(lim.v_drop, 'V')}"))
+                     reason=(f"{s['r7_series']} value; the smallest that keeps every corner's trip in "
+                             f"{s['i_no_trip']:g} to {s['i_must_trip']:g} A" if lim.box_scale is None else
+                             f"{s['r7_series']} value; the smallest whose Monte Carlo lot keeps the trip in "
+                             f"{s['i_no_trip']:g} to {s['i_must_trip']:g} A for {lim.mc_yield:.4%} of boards "
+                             "(criterion = yield; not every corner)") + f"; drops {eng(lim.v_drop, 'V')}"))
     t = s["resistor_tolerance"]
     current = {9: vz_high / ((lim.r9 + lim.r10 + lim.r11) * (1 - t)), 12: vz_high / ((lim.r12 + lim.r13) * (1 - t))}
     current.update({10: current[9], 11: current[9], 13: current[12]})  # each divider's string carries one current

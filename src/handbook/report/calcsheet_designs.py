@@ -140,7 +140,12 @@ def limiter(r) -> list:
     out = [
         words(f"Exact search over {s['r7_series']} R7 and the divider networks: the smallest R7 with every corner "
               f"inside {_at(s['i_no_trip'], 'A')} .. {_at(s['i_must_trip'], 'A')} is {_at(r.r7, 'Ω')}; {net}",
-              (r.r7, "Ω"), f"{here}: exact search by closed-form bounds (search.solve)"),
+              (r.r7, "Ω"), f"{here}: exact search by closed-form bounds (search.solve)")
+        if r.box_scale is None else
+        words(f"criterion = yield: the exact search run on the corners of every tolerance times {r.box_scale:.3g}, "
+              f"shrunk until a Monte Carlo lot meets yield_min = {s['yield_min']:.6g}: R7 = {_at(r.r7, 'Ω')}; {net} "
+              "(at the full corners this network does not stay inside the window: the next step's margins)",
+              (r.r7, "Ω"), f"{here}: yield search (by_yield), corners of a shrunk box"),
         equation_step("Nominal sense voltage at the trip point (zener at its nominal voltage)", "an94002-eq13",
                       {"V_{D1}": (s["zener_voltage"], "V"), "R_9": (r.r9, "Ω"), "R_{10}": (r.r10, "Ω"),
                        "R_{11}": (r.r11, "Ω"), "R_{12}": (r.r12, "Ω"), "R_{13}": (r.r13, "Ω")},

@@ -24,7 +24,8 @@ from . import page, sections, simulated, worst
 @dataclass
 class Context:
     """What the sections read: the spec, its trace (``version``, ``spec_sha256``, ``spec_file``), the designed
-    tables the spec asked for ({table: Result}), their BOM rows, and the SPICE warnings gathered on the way."""
+    tables the spec asked for ({table: Result}), their BOM rows, and the warnings SPICE and the worst-case analysis
+    gather on the way (section 7 lists them)."""
 
     spec: object
     trace: dict

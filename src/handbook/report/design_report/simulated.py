@@ -115,4 +115,5 @@ def section(ctx) -> str:
                 out.append(WAVES[t](result))
         except (checks.SpiceError, checks.SpiceUnavailable) as exc:
             out.append(note(f"SPICE run failed: {exc}"))
+            ctx.spice_warnings.append((t, f"SPICE run failed, the design is not confirmed by simulation: {exc}"))
     return "".join(out)

@@ -22,16 +22,28 @@ def _share(x) -> str:
     return "—" if x is None else f"{x:.2%}".replace("%", " %")
 
 
+#: below this share of a lot meeting every limit, the report warns (section 7 too)
+YIELD_WARN = 0.999
+
+
 def quantities_table(t: str, wc) -> str:
-    """One row per quantity: nominal, EVA, RSS and Monte Carlo bounds, the limits, the yield."""
+    """One row per quantity: nominal, EVA, RSS and Monte Carlo bounds, the limits."""
     rows = []
     for q in wc.quantities:
         key = f"wc.{t}.{q.key}"
         rows.append([esc(q.label), value(f"{key}.nominal", q.nominal, q.unit),
                      _pair(f"{key}.eva", q.eva_low, q.eva_high, q.unit), _pair(f"{key}.rss", q.rss_low, q.rss_high, q.unit),
-                     _pair(f"{key}.mc", q.mc_low, q.mc_high, q.unit), _pair(f"{key}.limit", q.limit_low, q.limit_high, q.unit),
-                     _share(wc.yields.get(q.key))])
-    return table(["quantity", "nominal", "extreme value (EVA)", "RSS", "Monte Carlo", "limits", "yield"], rows, (1, 6))
+                     _pair(f"{key}.mc", q.mc_low, q.mc_high, q.unit), _pair(f"{key}.limit", q.limit_low, q.limit_high, q.unit)])
+    return table(["quantity", "nominal", "extreme value (EVA, every corner)",
+                  "RSS (nominal ± root-sum-square of each input's half range)",
+                  "Monte Carlo (0.005 % .. 99.995 % of the lot)", "limits"], rows, (1,))
+
+
+def yields_table(wc) -> str:
+    """The share of the lot inside each limit, and inside all of them together."""
+    rows = [[esc(name), _share(y)] for name, y in wc.yields.items()]
+    rows.append(["<b>every limit together</b>", f"<b>{_share(wc.yield_all)}</b>"])
+    return table(["limit", "share of the lot inside it"], rows, (1,))
 
 
 def histogram(t: str, q, samples) -> str:
@@ -61,15 +73,25 @@ def histogram(t: str, q, samples) -> str:
 
 def one(t: str, wc) -> str:
     """The worst-case analysis of one design, as HTML."""
+    kinds = sorted({d.kind for d in wc.distributions})
     out = [f"<h3>{esc(title(t))}</h3>",
-           f"<p>Monte Carlo: {wc.n:,} samples, seed {wc.seed}; every limit met together in "
-           f"{_share(wc.yield_all)} of them.</p>", quantities_table(t, wc)]
+           f"<p>Monte Carlo: {wc.n:,} samples, seed {wc.seed}, every part {' or '.join(kinds) or 'as stated'} inside "
+           f"the range the table <i>Distributions assumed</i> below gives it (with its source); every limit met "
+           f"together in {_share(wc.yield_all)} of them.</p>"]
+    if wc.yield_all < YIELD_WARN:
+        out.append(f'<p class="warn"><b>Below {_share(YIELD_WARN)}:</b> at these distributions '
+                   f"{_share(1 - wc.yield_all)} of the boards miss a limit (which, below); the design's corners do "
+                   "not cover every spread this analysis draws.</p>")
+    out += [yields_table(wc), quantities_table(t, wc)]
     out += [histogram(t, q, wc.samples[q.key]) for q in wc.quantities if q.key in wc.samples]
     out.append("<h4>Distributions assumed</h4>")
     out.append(table(["part", "distribution", "low", "high", "source"],
                      [[esc(d.part), esc(d.kind), f"{d.low:.6g}", f"{d.high:.6g}", esc(d.cite)] for d in wc.distributions],
                      (2, 3)))
-    out.append("<h4>Sensitivity: what the spread comes from</h4>")
+    binding = getattr(wc, "binding", "")
+    out.append("<h4>Sensitivity: what the spread comes from</h4>" + (
+        f"<p>Ranked for the quantity with the least worst-case margin: <b>{esc(binding)}</b> (another quantity "
+        "can rank its sources differently).</p>" if binding else ""))
     out.append(table(["source", "share of the spread", "worst margin if its spread were halved", "yield if halved"],
                      [[esc(s.source), _share(s.share), _share(s.margin_if_halved), _share(s.yield_if_halved)]
                       for s in wc.sensitivity], (1, 2, 3)))
@@ -100,8 +122,13 @@ def section(ctx, analyse=None) -> str:
     for t, result in ctx.designed.items():
         try:
             wc = analyse(t, result, n=N, seed=SEED)
-        except Exception as exc:  # another module's failure is reported in its place, never loses the report
+        except Exception as exc:  # another module's failure is reported in its place and among the warnings
             out.append(f"<h3>{esc(title(t))}</h3>" + note(f"worst-case analysis failed: {type(exc).__name__}: {exc}"))
+            ctx.spice_warnings.append((t, f"worst-case analysis failed: {type(exc).__name__}: {exc}"))
             continue
+        if wc.yield_all < YIELD_WARN:
+            ctx.spice_warnings.append((t, f"worst case: every limit met by {_share(wc.yield_all)} of a Monte Carlo "
+                                          f"lot ({', '.join(f'{k} {_share(v)}' for k, v in wc.yields.items())}) at "
+                                          "the distributions section 4 states"))
         out.append(one(t, wc))
     return "".join(out)
