@@ -6,9 +6,11 @@ numpy arrays (never SPICE): every varying input uniform inside its range (no sou
 better distribution; each :class:`Distribution` says so), drawn in a fixed order from
 ``numpy.random.default_rng(seed)``. EVA evaluates the same equations at every corner of the inputs' box, the
 corners the design's own enumeration takes (the tests check they give the design's reported extremes); every
-quantity here is monotonic in each input, so EVA bounds every sample. RSS is nominal +- the root-sum-square of
-each input's first-order effect, half its change from the low to the high end of its range with the others
-nominal. What each design's quantities and limits are: :mod:`.limiter` and :mod:`.models`.
+quantity here is monotonic in each input, so EVA bounds every sample. RSS is one-sided: below nominal the
+root-sum-square of each input's largest move down (over its two ends, the others nominal), above it of each
+one's largest move up, so an input whose range is not symmetric about nominal (the class-D oscillator's
+0.8 .. 1.235) moves each side by what it really does; it stays inside EVA. What each design's quantities and
+limits are: :mod:`.limiter` and :mod:`.models`.
 """
 from __future__ import annotations
 
@@ -149,15 +151,16 @@ def analyse(table: str, result, n: int = 100_000, seed: int = 1) -> WorstCase:
         limit together when that tolerance's range is halved; the drift sentences, ``n`` and ``seed``.
     """
     m = model(table, result)
-    nom, eva, eff = engine.nominal(m), engine.corners(m), engine.effects(m)
+    nom, eva = engine.nominal(m), engine.corners(m)
+    rss = engine.sided(m, nom)
     draws = engine.draw(m, n, seed)
     samples = engine.evaluate(m, draws)
     quantities = []
     for q in m.measures:
-        rss = float(np.sqrt(sum(eff[src.name][q.key] ** 2 for src in m.sources)))
+        down, up = rss[q.key]
         lo, hi = np.quantile(samples[q.key], engine.QUANTILES)
         quantities.append(Quantity(q.key, q.label, q.unit, nom[q.key], float(eva[q.key].min()),
-                                   float(eva[q.key].max()), nom[q.key] - rss, nom[q.key] + rss, float(lo), float(hi),
+                                   float(eva[q.key].max()), nom[q.key] - down, nom[q.key] + up, float(lo), float(hi),
                                    q.limit_low, q.limit_high))
     per_limit, overall = engine.yields(m, samples)
     return WorstCase(

@@ -134,6 +134,35 @@ def effects(model: Model) -> dict:
             for j, src in enumerate(model.sources)}
 
 
+def sided(model: Model, nominal_values: dict) -> dict:
+    """Each input's largest move of each quantity below and above its nominal, over the input's two ends, every
+    other input nominal: what the one-sided root-sum-square adds up (an input whose range is not symmetric, or a
+    quantity that bends, moves it further one way than the other).
+
+    Parameters
+    ----------
+    model : Model
+        The design's analysis model.
+    nominal_values : dict
+        {quantity key: nominal value}, as :func:`nominal` gives them.
+
+    Returns
+    -------
+    dict
+        {quantity key: (down, up)}: the root-sum-squares of the moves below and above nominal (both >= 0).
+    """
+    k = len(model.sources)
+    args = {src.name: np.full(2 * k, src.nominal) for src in model.sources}
+    for j, src in enumerate(model.sources):
+        args[src.name][2 * j], args[src.name][2 * j + 1] = src.low, src.high
+    out = {}
+    for key, v in evaluate(model, args).items():
+        d = np.asarray(v, dtype=float).reshape(k, 2) - nominal_values[key]
+        out[key] = (float(np.sqrt(np.sum(np.minimum(d.min(axis=1), 0.0) ** 2))),
+                    float(np.sqrt(np.sum(np.maximum(d.max(axis=1), 0.0) ** 2))))
+    return out
+
+
 def draw(model: Model, n: int, seed: int) -> dict:
     """``n`` boards: every input uniform in its range, drawn in the model's order from
     ``numpy.random.default_rng(seed)``.

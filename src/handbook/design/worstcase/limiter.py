@@ -28,6 +28,10 @@ from .engine import Measure, Model, Source
 UNIFORM = "no distribution inside the limits is published for it: uniform (every value in the range equally likely)"
 
 
+#: the BZX79-C8V2's smallest temperature coefficient over its largest (+0.03 and +0.08 %/K, datasheet)
+TC_LOW = 0.03 / 0.08
+
+
 def equations(s: dict):
     """The limiter's board equations as one vectorised function of the varying inputs.
 
@@ -86,9 +90,10 @@ def sources(r7: float, network, s: dict) -> tuple[Source, ...]:
     rows += [
         Source("vz", "D1 V_Z", vz * (1 - tz), vz * (1 + tz), vz, "zener tolerance",
                f"BZX79-C8V2 datasheet: 7.7 to 8.7 V at 5 mA (zener_tolerance = {tz:g}); {UNIFORM}"),
-        Source("tc", "D1 |tempco|", 0.0, s["zener_tc"], 0.0, "zener drift",
-               "BZX79-C8V2 datasheet: +0.08 %/K max (zener_tc, either sign): |tc| uniform in 0 .. zener_tc, each "
-               "board at both ends of 25 C +- temp_span (AN94002 2.4)"),
+        Source("tc", "D1 |tempco|", s["zener_tc"] * TC_LOW, s["zener_tc"], s["zener_tc"] * (1 + TC_LOW) / 2,
+               "zener drift",
+               "BZX79-C8V2 datasheet: +0.03 to +0.08 %/K (zener_tc the top): |tc| uniform in "
+               f"{TC_LOW:.3g} x zener_tc .. zener_tc, each board at both ends of 25 C +- temp_span (AN94002 2.4)"),
         Source("vos", "LM358 V_os", -s["offset"], s["offset"], 0.0, "op-amp offset",
                f"LM358 datasheet, over temperature: |V_os| <= {s['offset'] * 1e3:g} mV; {UNIFORM}"),
         Source("i_avg", "LM358 I_b (average)", -s["input_bias"], s["input_bias"], 0.0, "op-amp bias current",

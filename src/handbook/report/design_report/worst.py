@@ -35,7 +35,7 @@ def quantities_table(t: str, wc) -> str:
                      _pair(f"{key}.eva", q.eva_low, q.eva_high, q.unit), _pair(f"{key}.rss", q.rss_low, q.rss_high, q.unit),
                      _pair(f"{key}.mc", q.mc_low, q.mc_high, q.unit), _pair(f"{key}.limit", q.limit_low, q.limit_high, q.unit)])
     return table(["quantity", "nominal", "extreme value (EVA, every corner)",
-                  "RSS (nominal ± root-sum-square of each input's half range)",
+                  "RSS (each side: root-sum-square of each input's move that way)",
                   "Monte Carlo (0.005 % .. 99.995 % of the lot)", "limits"], rows, (1,))
 
 
