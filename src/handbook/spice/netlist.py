@@ -41,6 +41,7 @@ from . import converter as conv
 from . import models, timers
 from .circuit import Check, Circuit, Part
 from .limiter import decks as lim
+from .limiter import left_out
 
 #: odd harmonics of the idle bridge's square wave summed for the residue (the 17th adds under 1e-7 of its rms)
 HARMONICS = tuple(range(1, 16, 2))
@@ -193,7 +194,7 @@ def current_limiter(result) -> list[Deck]:
     vz, s910 = s["zener_voltage"], result.r9 + result.r10
     # the design takes V_Z at D1's 5 mA test current; here D1 carries R14's current less the dividers' (more at a
     # nominal V_Z than the design's least, i_zener_min): its 15 ohm lift V_Z, and eq 13 and eq 11 scale with V_Z
-    i_d1 = (s["v_supply_min"] - vz) / result.r14 - vz / (s910 + result.r11) - vz / (result.r12 + result.r13)
+    i_d1 = left_out.divider_currents(p, 0.0)["zener"]
     k = 1 + models.BZX79_C8V2_RZ * (i_d1 - models.BZX79_C8V2_IZT) / vz
     lift = (f"the design's figure with V_Z at the {i_d1 * 1e3:.3g} mA D1 carries here (x {k:.5f}: its 15 ohm "
             "above the 5 mA test current)")

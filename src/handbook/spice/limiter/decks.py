@@ -278,9 +278,7 @@ def trip_voltage(p: dict) -> float:
     """V_cs at the trip with the offset and both bias currents: eq 13 (an94002.v_cs_trip) plus the bias terms
     of the design's node equation, I_+ R12 - I_- ((R9 + R10) || R11) / A (handbook.design.limiter.model)."""
     network = (p["r9"], p["r10"], p["r11"], p["r12"], p["r13"])
-    a = an94002.factor_a(p["r12"], p["r13"])
-    r_m = (p["r9"] + p["r10"]) * p["r11"] / (p["r9"] + p["r10"] + p["r11"])
-    return an94002.v_cs_trip(p["zener_voltage"], *network, p["vos"]) + p["ibp"] * p["r12"] - p["ibn"] * r_m / a
+    return an94002.v_cs_trip(p["zener_voltage"], *network, p["vos"]) + left_out.bias_shift(p)
 
 
 def corner_equations(p: dict) -> dict:

@@ -65,6 +65,20 @@ def divider_currents(p: dict, v_cs: float) -> dict:
     return {"ref": i_ref, "shift": i_shift, "r14": i_r14, "zener": i_r14 - i_ref - i_shift}
 
 
+def bias_shift(p: dict) -> float:
+    """How far the LM358's bias currents move AN94002 figure 3's trip V_cs (V): the node equation's terms
+    I_+ R12 - I_- ((R9 + R10) || R11) / A (handbook.design.limiter.model), what eq 13 leaves out."""
+    a = an94002.factor_a(p["r12"], p["r13"])
+    r_m = (p["r9"] + p["r10"]) * p["r11"] / (p["r9"] + p["r10"] + p["r11"])
+    return p["ibp"] * p["r12"] - p["ibn"] * r_m / a
+
+
+def _shift_moved(p: dict, dvz: float) -> float:
+    """How far eq 11's level shift moves when D1's voltage moves by ``dvz`` (V)."""
+    return (an94002.level_shift(p["zener_voltage"] + dvz, p["r12"], p["r13"])
+            - an94002.level_shift(p["zener_voltage"], p["r12"], p["r13"]))
+
+
 def opamp_terms(p: dict, v_cs: float, ramp: float, v_mid: float, with_bias: bool) -> dict:
     """Relative terms (fractions of ``v_cs``, the equation's trip) for AN94002 figure 3 ramped from 0 to
     ``p["i_max"]`` in ``ramp`` seconds: lag, bias (when the equation has none), zener, and r12 (the motor
@@ -77,8 +91,7 @@ def opamp_terms(p: dict, v_cs: float, ramp: float, v_mid: float, with_bias: bool
     network = (p["r9"], p["r10"], p["r11"], p["r12"], p["r13"])
     dvcs_dvz = (an94002.v_cs_trip(p["zener_voltage"] + 1e-3, *network, p["vos"])
                 - an94002.v_cs_trip(p["zener_voltage"], *network, p["vos"])) / 1e-3
-    r_m = (p["r9"] + p["r10"]) * p["r11"] / (p["r9"] + p["r10"] + p["r11"])
-    bias = (p["ibp"] * p["r12"] - p["ibn"] * r_m / a) if with_bias else 0.0
+    bias = bias_shift(p) if with_bias else 0.0
     return {"lag": slope * tau / v_cs, "bias": bias / v_cs, "zener": dvcs_dvz * dvz / v_cs,
             "r12": -cur["shift"] * p["r7"] / v_cs, "tau": tau, "dvz": dvz, "i_zener": cur["zener"]}
 
@@ -103,9 +116,8 @@ def shift_terms(p: dict, shift: float, with_bias: bool) -> dict:
     cur = divider_currents(p, 0.0)
     dvz = zener_shift(cur["zener"])
     r_p = p["r12"] * p["r13"] / (p["r12"] + p["r13"])
-    d_shift = an94002.level_shift(p["zener_voltage"] + dvz, p["r12"], p["r13"]) - an94002.level_shift(
-        p["zener_voltage"], p["r12"], p["r13"])
-    return {"bias": (-p["ibp"] * r_p / shift) if with_bias else 0.0, "zener": d_shift / shift, "dvz": dvz}
+    return {"bias": (-p["ibp"] * r_p / shift) if with_bias else 0.0, "zener": _shift_moved(p, dvz) / shift,
+            "dvz": dvz}
 
 
 def back_terms(p: dict, v_back: float, ramp: float, v_mid: float) -> dict:
@@ -119,8 +131,7 @@ def back_terms(p: dict, v_back: float, ramp: float, v_mid: float) -> dict:
     a = an94002.factor_a(p["r12"], p["r13"])
     cur = divider_currents(p, v_back)
     dvz = zener_shift(cur["zener"])
-    d_head = an94002.level_shift(p["zener_voltage"] + dvz, p["r12"], p["r13"]) - an94002.level_shift(
-        p["zener_voltage"], p["r12"], p["r13"])
+    d_head = _shift_moved(p, dvz)
     network = (p["r9"], p["r10"], p["r11"], p["r12"], p["r13"])
     v_d = a * (an94002.v_cs_trip(p["zener_voltage"], *network, p["vos"]) - v_back)  # V+ - V- less the offset
     ok = 0.01 / (v_d + 0.01)
