@@ -186,9 +186,15 @@ def render(nb: dict) -> tuple[list[str], list[str], dict]:
 
 
 def outputs_markdown(nb: dict) -> str:
-    return "\n".join("".join(o.get("data", {}).get("text/markdown", ""))
-                     for c in nb["cells"] if c["cell_type"] == "code" for o in c.get("outputs", [])
-                     if not o.get("metadata", {}).get("scrapbook"))
+    """Every Markdown output, and the text of every HTML output (the design report's sections), joined."""
+    def text(data: dict) -> str:
+        if "text/markdown" in data:
+            return "".join(data["text/markdown"])
+        html = re.sub(r"<(style|svg)\b.*?</\1>", " ", "".join(data.get("text/html", "")), flags=re.S)
+        return re.sub(r"<[^>]+>", " ", html)
+
+    return "\n".join(text(o.get("data", {})) for c in nb["cells"] if c["cell_type"] == "code"
+                     for o in c.get("outputs", []) if not o.get("metadata", {}).get("scrapbook"))
 
 
 #: between a table's header and one of its rows when the row is read as a sentence (a header may begin with an
@@ -587,15 +593,27 @@ def test_opamp_limiter_chapter_with_a_matched_network_and_200mV(tmp_path_factory
     assert "| sense signal at the op-amp input for V_cs = 100 mV | 74.1 mV | — | n/a |" in tables
 
 
+def _reported(nb_path) -> tuple[dict, str]:
+    """(``table.key`` -> (exact value, text shown), every HTML output joined) of the book's form of the design
+    report: each value sits in a ``<data value=... data-key=...>`` element."""
+    nb = json.loads(Path(nb_path).read_text())
+    html = "".join("".join(o.get("data", {}).get("text/html", "")) for c in nb["cells"] for o in c.get("outputs", []))
+    found = re.findall(r'<data value="([^"]+)" data-key="([^"]+)">([^<]*)</data>', html)
+    return {key: (float(v), shown) for v, key, shown in found}, html
+
+
 def test_design_your_own_with_the_fan_spec(tmp_path_factory):
     assert FAN == ("[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n"
                    "[current_limiter]\ni_no_trip = 0.3\ni_must_trip = 0.7\n")
-    _, tables = _glued(rerun("design/your_own", tmp_path_factory))
+    values, html = _reported(rerun("design/your_own", tmp_path_factory))
     # CAP-CD by hand: 11 uA (the source column's maximum) for 10/(1500*2) s over the narrowest window
     # 2.3 V - 0.9 V at -5 % -> 27.6 nF -> E12 33 nF
     assert 11e-6 * (10 / 3000) / 1.4 / 0.95 == pytest.approx(27.57e-9, rel=1e-3)
-    assert "| CAP-CD | 33 nF |" in tables
-    assert "| A1-C3 | 1 | CAP-CD timing capacitor | 33 nF | ±5 % |" in tables
-    # the limiter keeps 0.3..0.7 A at every corner
-    row = [line for line in tables.splitlines() if line.startswith("| lowest trip current |")][0]
-    assert row.split("|")[2].split()[1] == "mA" and float(row.split("|")[2].split()[0]) >= 300
+    assert values["commutation.cap_cd"] == (pytest.approx(33e-9), "33 nF")
+    assert "<td>A1-C3</td><td>CAP-CD timing capacitor</td><td class=\"num\">33 nF</td><td>±5 %</td>" in html
+    # the limiter keeps 0.3..0.7 A at every corner, shown in mA
+    low, shown = values["current_limiter.i_trip_min"]
+    assert low >= 0.3 and shown.endswith(" mA") and float(shown.split()[0]) == pytest.approx(low * 1e3, abs=0.05)
+    assert values["current_limiter.i_trip_max"][0] <= 0.7
+    # only the two tables the spec wrote are designed: no amplifier or converter in the report
+    assert not any(k.startswith(("class_d.", "converter.")) for k in values)

@@ -133,7 +133,7 @@ def fake_analyse(table, result, n=100_000, seed=1, yield_all=0.9991):
         quantities=qs, yields={"corner above 1.2 kHz": yield_all, "ripple_max": 1.0}, yield_all=yield_all, n=n,
         seed=seed, binding="switching residue at the load",
         samples={q.key: q.nominal + rng.normal(0, (q.eva_high - q.nominal) / 4, 2000) for q in qs},
-        distributions=[SimpleNamespace(part="L1", kind="uniform", low=0.9, high=1.1, cite="±10 % inductor")],
+        distributions=[SimpleNamespace(part="L1", kind="uniform", low=0.9, high=1.1, cite="±10 % inductor", unit="")],
         sensitivity=[SimpleNamespace(source="L1 tolerance", share=0.62, margin_if_halved=0.31, yield_if_halved=0.99995)],
         drift=["L1 loses 3 % of its inductance at 100 °C"])
 
@@ -232,3 +232,37 @@ def test_the_pdf_has_version_and_hash_on_every_page(tmp_path):
         assert f"page {k} of {len(pages)}" in text
     whole = " ".join(pages)
     assert "1. The spec" in whole and "7. Warnings, assumptions and trace" in whole and "8 Ω" in whole
+
+
+@pytest.mark.parametrize("name", ["design/your_own", *(f"examples/{p.stem}" for p in EXAMPLES)])
+def test_the_book_s_design_chapter_is_the_report_s_html_form(name):
+    """"Design your own" and the worked examples are the report, section by section: the report's headings in its
+    order, each followed by the one cell that shows that section of the report's own HTML, nothing else computed."""
+    from handbook.report import design_report
+
+    nb = json.loads((ROOT / "book" / f"{name}.ipynb").read_text())
+    heads = [line[3:] for c in nb["cells"] if c["cell_type"] == "markdown"
+             for line in "".join(c["source"]).splitlines() if line.startswith("## ")]
+    assert heads == [head for _, head, _ in design_report.SECTIONS]
+    shows = [re.fullmatch(r'design_report\.show\(ctx, "([\w-]+)"\)', "".join(c["source"]).strip())
+             for c in nb["cells"] if c["cell_type"] == "code" and "show(" in "".join(c["source"])]
+    assert [m.group(1) for m in shows if m] == [sid for sid, _, _ in design_report.SECTIONS] and all(shows)
+    outputs = ["".join(o["data"]["text/html"]) for c in nb["cells"] if "show(" in "".join(c["source"])
+               for o in c.get("outputs", []) if "text/html" in o.get("data", {})]
+    assert len(outputs) == len(design_report.SECTIONS)
+    assert all(o.startswith('<div class="design-report"><style>.design-report table') for o in outputs)
+
+
+def test_a_table_nothing_meets_is_shown_with_what_can_be_met(tmp_path):
+    """The book's form designs what can be met and says why the rest is not (the command writes no file)."""
+    from handbook.report import design_report
+
+    spec = tmp_path / "tight.toml"
+    spec.write_text("[current_limiter]\nresistor_tolerance = 0.05\n[class_d]\n")
+    ctx = design_report.for_book(str(spec), no_spice=True)
+    assert list(ctx.designed) == ["class_d"] and list(ctx.unmet) == ["current_limiter"]
+    notes = design_report.body(ctx, "notes")
+    assert "cannot be met, so not designed: the smallest R7" in notes and "v_drop_max" in notes
+    assert "<code>[current_limiter]</code> cannot be met" in design_report.body(ctx, "spec")
+    assert _handbook("report", spec, "-o", tmp_path / "tight.html").returncode == 3
+    assert not (tmp_path / "tight.html").exists()

@@ -42,7 +42,8 @@ def limiter_design_space(result, marks: dict | None = None):
     v = limiter_model.verify(R7, (R9, *others), s)
     worst = np.minimum(v["margin_low"], v["margin_high"])
     fig, ax = axes("R9", "R7", "Ω", "Ω", xlog=True, ylog=True)
-    pc = ax.pcolormesh(R9, R7, np.clip(worst, -1, 0.2), cmap="RdYlGn", vmin=-1, vmax=0.2, shading="nearest")
+    pc = ax.pcolormesh(R9, R7, np.clip(worst, -1, 0.2), cmap="RdYlGn", vmin=-1, vmax=0.2, shading="nearest",
+                       rasterized=True)  # one image in an SVG, not a path per cell
     if (worst > s["min_margin"]).any() and (worst < s["min_margin"]).any():
         ax.contour(R9, R7, worst, levels=[s["min_margin"]], colors="k", linewidths=1)
     ax.plot(result.r9, result.r7, "k*", ms=12, label="chosen")

@@ -151,7 +151,7 @@ def shown_value(v, unit: str) -> str:
         return f"{v:.0f} rpm"
     if unit == "K" and isinstance(v, float):  # a temperature rise: to a hundredth of a kelvin, as a sensor reads it
         return "< 0.01 K" if 0 <= v < 0.005 else f"{v:.3g} K" if abs(v) < 10 else f"{v:.1f} K"
-    if unit in ("F", "ohm", "A", "W", "V", "Hz", "H", "s", "m", "T"):
+    if unit in ("F", "ohm", "A", "W", "V", "Hz", "H", "s", "m", "T", "V/K"):
         return eng(v, unit.replace("ohm", "Ω"))
     if isinstance(v, float):
         return f"{v:.4g}" + (f" {unit}" if unit not in ("", "1") else "")

@@ -50,6 +50,7 @@ class Distribution:
     low: float
     high: float
     cite: str
+    unit: str = ""  # of low and high ("" a plain factor)
 
 
 @dataclass(frozen=True)
@@ -165,7 +166,7 @@ def analyse(table: str, result, n: int = 100_000, seed: int = 1) -> WorstCase:
     per_limit, overall = engine.yields(m, samples)
     return WorstCase(
         table=table, quantities=tuple(quantities), yields=per_limit, yield_all=overall, samples=samples,
-        distributions=tuple(Distribution(src.part, src.kind, src.low, src.high, src.cite) for src in m.sources),
+        distributions=tuple(Distribution(src.part, src.kind, src.low, src.high, src.cite, src.unit) for src in m.sources),
         sensitivity=tuple(Sensitivity(*row) for row in engine.sensitivity(m, eva, draws)), drift=m.drift, n=n,
         seed=seed, binding=getattr(engine.binding(m, eva), "key", ""))
 

@@ -4,6 +4,7 @@ seeded Monte Carlo lot; yields, and what halving each tolerance buys.
 """
 from __future__ import annotations
 
+import dataclasses
 import itertools
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -28,6 +29,7 @@ class Source:
     group: str
     cite: str
     kind: str = "uniform"
+    unit: str = ""  # of low, high and nominal (the results' units: "ohm", "F", "V"...; "" a plain factor)
 
 
 @dataclass(frozen=True)
@@ -290,8 +292,8 @@ def halved(src: Source) -> Source:
     Source
         The same input, range nominal - (nominal - low) / 2 .. nominal + (high - nominal) / 2.
     """
-    return Source(src.name, src.part, src.nominal - (src.nominal - src.low) / 2,
-                  src.nominal + (src.high - src.nominal) / 2, src.nominal, src.group, src.cite, src.kind)
+    return dataclasses.replace(src, low=src.nominal - (src.nominal - src.low) / 2,
+                               high=src.nominal + (src.high - src.nominal) / 2)
 
 
 def binding(model: Model, eva: dict) -> Measure | None:

@@ -83,25 +83,26 @@ def sources(r7: float, network, s: dict) -> tuple[Source, ...]:
     t, t7 = s["resistor_tolerance"], s["r7_tolerance"]
     vz, tz = s["zener_voltage"], s["zener_tolerance"]
     rows = [Source("r7", "R7", r7 * (1 - t7), r7 * (1 + t7), r7, "R7 tolerance",
-                   f"current_limiter.r7_tolerance = {t7:g}; {UNIFORM}")]
+                   f"current_limiter.r7_tolerance = {t7:g}; {UNIFORM}", unit="ohm")]
     for name, value in zip(("r9", "r10", "r11", "r12", "r13"), network):
         rows.append(Source(name, name.upper(), value * (1 - t), value * (1 + t), value, "R9..R13 tolerance",
-                           f"current_limiter.resistor_tolerance = {t:g}; {UNIFORM}"))
+                           f"current_limiter.resistor_tolerance = {t:g}; {UNIFORM}", unit="ohm"))
     rows += [
         Source("vz", "D1 V_Z", vz * (1 - tz), vz * (1 + tz), vz, "zener tolerance",
-               f"BZX79-C8V2 datasheet: 7.7 to 8.7 V at 5 mA (zener_tolerance = {tz:g}); {UNIFORM}"),
+               f"BZX79-C8V2 datasheet: 7.7 to 8.7 V at 5 mA (zener_tolerance = {tz:g}); {UNIFORM}", unit="V"),
         Source("tc", "D1 |tempco|", s["zener_tc"] * TC_LOW, s["zener_tc"], s["zener_tc"] * (1 + TC_LOW) / 2,
                "zener drift",
                "BZX79-C8V2 datasheet: +0.03 to +0.08 %/K (zener_tc the top): |tc| uniform in "
-               f"{TC_LOW:.3g} x zener_tc .. zener_tc, each board at both ends of 25 C +- temp_span (AN94002 2.4)"),
+               f"{TC_LOW:.3g} x zener_tc .. zener_tc, each board at both ends of 25 C +- temp_span (AN94002 2.4)",
+               unit="V/K"),
         Source("vos", "LM358 V_os", -s["offset"], s["offset"], 0.0, "op-amp offset",
-               f"LM358 datasheet, over temperature: |V_os| <= {s['offset'] * 1e3:g} mV; {UNIFORM}"),
+               f"LM358 datasheet, over temperature: |V_os| <= {s['offset'] * 1e3:g} mV; {UNIFORM}", unit="V"),
         Source("i_avg", "LM358 I_b (average)", -s["input_bias"], s["input_bias"], 0.0, "op-amp bias current",
                f"LM358 datasheet (TI SLOS068), over temperature: {s['input_bias'] * 1e9:g} nA; either sign, as the "
-               f"design's corners; {UNIFORM}"),
+               f"design's corners; {UNIFORM}", unit="A"),
         Source("i_diff", "LM358 I_os", -s["input_offset_current"], s["input_offset_current"], 0.0,
                "op-amp bias current", f"LM358 datasheet (TI SLOS068), over temperature: "
-               f"{s['input_offset_current'] * 1e9:g} nA; {UNIFORM}"),
+               f"{s['input_offset_current'] * 1e9:g} nA; {UNIFORM}", unit="A"),
     ]
     return tuple(rows)
 

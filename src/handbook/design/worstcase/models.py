@@ -45,13 +45,13 @@ def commutation(result) -> Model:
     t_slow, t_fast = an94002.t_com(s["rpm_min"], s["pole_pairs"]), an94002.t_com(s["rpm_max"], s["pole_pairs"])
     table = "TDA5144 datasheet (June 1994), CAP-CD table: min and max only; " + UNIFORM
     srcs = (Source("cap", "CAP-CD", c * (1 - s["tolerance"]), c * (1 + s["tolerance"]), c, "capacitor tolerance",
-                   f"commutation.tolerance = {s['tolerance']:g} (the capacitor's tolerance class); " + UNIFORM),
+                   f"commutation.tolerance = {s['tolerance']:g} (the capacitor's tolerance class); " + UNIFORM, unit="F"),
             Source("i_ch", "TDA5144 CAP-CD charge current", s["i_charge_min"], s["i_charge_max"],
-                   (s["i_charge_min"] + s["i_charge_max"]) / 2, "charge current", table),
+                   (s["i_charge_min"] + s["i_charge_max"]) / 2, "charge current", table, unit="A"),
             Source("v_low", "TDA5144 CAP-CD low level", s["v_low_min"], s["v_low_max"],
-                   (s["v_low_min"] + s["v_low_max"]) / 2, "low level", table),
+                   (s["v_low_min"] + s["v_low_max"]) / 2, "low level", table, unit="V"),
             Source("v_high", "TDA5144 CAP-CD high level", s["v_high_min"], s["v_high_max"],
-                   (s["v_high_min"] + s["v_high_max"]) / 2, "high level", table))
+                   (s["v_high_min"] + s["v_high_max"]) / 2, "high level", table, unit="V"))
 
     def f(cap, i_ch, v_low, v_high):
         swing = i_ch * t_slow / cap
@@ -92,9 +92,9 @@ def class_d(result) -> Model:
                    "osc_tol_fast; " + UNIFORM),
             Source("l", "L1, L2", lo * (1 - s["l_tolerance"]), lo * (1 + s["l_tolerance"]), lo, "inductor tolerance",
                    f"class_d.l_tolerance = {s['l_tolerance']:g}; both coils taken equal (the filter's model); "
-                   + UNIFORM),
+                   + UNIFORM, unit="H"),
             Source("c", "C_BYP", co * (1 - s["c_tolerance"]), co * (1 + s["c_tolerance"]), co, "capacitor tolerance",
-                   f"class_d.c_tolerance = {s['c_tolerance']:g} (film, J); " + UNIFORM))
+                   f"class_d.c_tolerance = {s['c_tolerance']:g} (film, J); " + UNIFORM, unit="F"))
 
     def f(osc, l, c):
         fs = f_nom * osc
@@ -136,10 +136,10 @@ def converter(result) -> Model:
     s, r1, l1 = result.spec, result.r1_part, result.l1_nominal
     dev = f"assumption: +-{DEVICE_SPREAD:.0%} (no public TCA5600 characteristics; TCA5600 chapter's reading note); "
     srcs = (Source("r1", "R1", r1 * (1 - s["r1_tolerance"]), r1 * (1 + s["r1_tolerance"]), r1, "R1 tolerance",
-                   f"converter.r1_tolerance = {s['r1_tolerance']:g}; " + UNIFORM),
+                   f"converter.r1_tolerance = {s['r1_tolerance']:g}; " + UNIFORM, unit="ohm"),
             Source("l", "L1 (A_L)", l1 * (1 - s["a_l_tolerance"]), l1 * (1 + s["a_l_tolerance"]), l1, "A_L tolerance",
-                   f"converter.a_l_tolerance = {s['a_l_tolerance']:g} (gapped core, turns fixed); " + UNIFORM),
-            *(Source(k, part, s[key] * (1 - DEVICE_SPREAD), s[key] * (1 + DEVICE_SPREAD), s[key], part, dev + UNIFORM)
+                   f"converter.a_l_tolerance = {s['a_l_tolerance']:g} (gapped core, turns fixed); " + UNIFORM, unit="H"),
+            *(Source(k, part, s[key] * (1 - DEVICE_SPREAD), s[key] * (1 + DEVICE_SPREAD), s[key], part, dev + UNIFORM, unit="V")
               for k, key, part in (("v12h", "v12h", "TCA5600 V12(H)"), ("vce", "v_ce_sat", "TCA5600 V_CE(sat)"),
                                    ("vf", "v_f", "rectifier V_F"))))
     top = s["v_out"] + s["v_regulator_drop"]

@@ -13,25 +13,35 @@ from ..tables import shown_value
 
 esc = html.escape
 
-#: screen and print styles; the running footer's text is filled in per report (:func:`document`)
+#: the styles of the report's content (tables, figures, math, notes): the page's and the book's form's alike
+CONTENT_CSS = """
+table { border-collapse: collapse; margin: 8px 0 14px; font-size: 13px; }
+th, td { border: 1px solid #bbb; padding: 3px 6px; vertical-align: top; text-align: left; }
+th { background: #eef1f5; }
+td.num, th.num { text-align: right; white-space: nowrap; }
+.scroll { overflow-x: auto; max-width: 100%; }
+figure { margin: 10px 0 18px; }
+figure svg, figure img { max-width: 100%; height: auto; }
+figcaption { font-size: 12px; color: #444; }
+.note { color: #555; font-style: italic; }
+.warn { color: #8a1c00; }
+.ok { color: #145214; }
+details > summary { cursor: pointer; font-weight: bold; margin: 6px 0; }
+math { font-size: 1.05em; }
+.calc-math { margin: 0.9em 0; line-height: 2.2; overflow-x: auto; max-width: 100%; }
+.calc-step { margin-bottom: 1.2em; }
+"""
+
+#: screen and print styles of the page; the running footer's text is filled in per report (:func:`document`)
 CSS = """
 :root { color-scheme: light; }
 body { font-family: "DejaVu Sans", "Liberation Sans", Arial, sans-serif; font-size: 14px; line-height: 1.45;
        max-width: 1100px; margin: 0 auto; padding: 0 16px; color: #1b1b1b; }
 h1 { font-size: 26px; margin: 16px 0 4px; } h2 { font-size: 21px; margin-top: 30px; border-bottom: 2px solid #345; }
 h3 { font-size: 17px; margin-top: 22px; }
-table { border-collapse: collapse; margin: 8px 0 14px; font-size: 13px; }
-th, td { border: 1px solid #bbb; padding: 3px 6px; vertical-align: top; text-align: left; }
-th { background: #eef1f5; } td.num, th.num { text-align: right; white-space: nowrap; }
-.scroll { overflow-x: auto; max-width: 100%; }
-figure { margin: 10px 0 18px; } figure svg, figure img { max-width: 100%; height: auto; }
-figcaption { font-size: 12px; color: #444; }
 .trace { font-size: 12px; color: #333; background: #f6f7f9; border: 1px solid #ccd; padding: 6px 10px;
          overflow-wrap: anywhere; }
-.note { color: #555; font-style: italic; } .warn { color: #8a1c00; } .ok { color: #145214; }
-details > summary { cursor: pointer; font-weight: bold; margin: 6px 0; }
-math { font-size: 1.05em; }
-.calc-math { margin: 0.9em 0; line-height: 2.2; } .calc-step { margin-bottom: 1.2em; }
+""" + CONTENT_CSS + """
 @page { size: A4; margin: 16mm 13mm 20mm 13mm;
         @bottom-left { content: "__FOOTER__"; font-size: 7.5pt; color: #333; }
         @bottom-right { content: "page " counter(page) " of " counter(pages); font-size: 8pt; } }
@@ -43,6 +53,45 @@ math { font-size: 1.05em; }
   table { font-size: 8.5pt; } .scroll { overflow: visible; }
 }
 """
+
+
+def scoped(css: str, scope: str) -> str:
+    """Rules of plain CSS (no @-rules) with every selector put under ``scope``.
+
+    Parameters
+    ----------
+    css : str
+        ``selector, selector { declarations }`` rules, one a line.
+    scope : str
+        The enclosing selector (".design-report").
+
+    Returns
+    -------
+    str
+        The scoped rules.
+    """
+    out = []
+    for rule in filter(None, (r.strip() for r in css.split("}"))):
+        sel, decl = rule.split("{", 1)
+        out.append(", ".join(f"{scope} {x.strip()}" for x in sel.split(",")) + " {" + decl + "}")
+    return "\n".join(out)
+
+
+def fragment(body_html: str) -> str:
+    """A section of the report as the book shows it: its HTML inside ``<div class="design-report">`` with the
+    report's content styles scoped to that box (:data:`CONTENT_CSS`), so the book's own styles are untouched.
+
+    Parameters
+    ----------
+    body_html : str
+        The section's body.
+
+    Returns
+    -------
+    str
+        HTML.
+    """
+    return f'<div class="design-report"><style>{scoped(CONTENT_CSS, ".design-report")}</style>{body_html}</div>'
 
 
 def table(header: list[str], rows: list[list[str]], numeric: tuple[int, ...] = ()) -> str:

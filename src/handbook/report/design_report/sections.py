@@ -39,8 +39,9 @@ def _param_row(t: str, p, used, given: dict) -> list[str]:
 def spec_section(ctx) -> str:
     """Section 1: per table the spec asked for, the keys whose value differs from the schema's default (what the
     reader changed), then every key with the value used, folded."""
-    out = [f"<p>Tables designed: {', '.join(f'<code>[{esc(t)}]</code>' for t in ctx.spec.asked)}"
-           + ("" if ctx.spec.written else " (the spec wrote none: all four, at the notes' defaults)") + ". "
+    out = [f"<p>Tables designed: {', '.join(f'<code>[{esc(t)}]</code>' for t in ctx.designed) or 'none'}"
+           + ("" if ctx.spec.written else " (the spec wrote none: all four, at the notes' defaults)")
+           + "".join(f"; <code>[{esc(t)}]</code> cannot be met (section 7 says what can)" for t in ctx.unmet) + ". "
            "Values in SI units (speeds in rpm, temperatures in °C, tolerances as fractions).</p>"]
     header = ["key", "value used", "default", "meaning", "written"]
     for t in ctx.spec.asked:
@@ -99,6 +100,53 @@ def margins_table(t: str, result) -> str:
     return table(["margin", "value"], rows, (1,)) if rows else ""
 
 
+def _figures(t: str, result) -> list[tuple[object, str]]:
+    """The figures that show how a design's choice was made (the design chapters' own plots), with captions."""
+    from .. import design_plots as plots
+
+    if t == "commutation":
+        out = [(plots.timing_ranges(result), "Each capacitor of the series: the speeds it serves at every tolerance "
+                                             "corner; the chosen one marked."),
+               (plots.timing_swing(result), "The chosen CAP-CD's worst-case swing against speed, inside the window "
+                                            "between the switching levels.")]
+        if result.cap_st is not None:
+            out.append((plots.start_settling(result), "The rotor's rocking after a start pulse against the start "
+                                                      "periods CAP-ST gives."))
+        return out
+    if t == "current_limiter":
+        return [(plots.limiter_design_space(result), "Every (R7, R9) pair of the series with R10..R13 as chosen, "
+                                                     "coloured by its worst margin at every corner; the chosen "
+                                                     "pair starred, the design's min_margin contoured.")]
+    if t == "class_d":
+        from ...design.class_d.explain import datasheet_application
+
+        ds = datasheet_application(result.spec)
+        failed = [k for k, m in ds["margins"].items() if m < -1e-12]
+        label = "datasheet's parts" + (f" (fail: {', '.join(failed)})" if failed else " (meet every check)")
+        return [(plots.class_d_margins(result, {label: ds["margins"]}),
+                 "Each check's margin at its worst corner, beside the datasheet's typical parts judged by the same "
+                 "checks on this spec."),
+                (plots.class_d_design_space(result), "Around the chosen L and C_BYP: which check fails first.")]
+    return []
+
+
+def choice_figures(t: str, result) -> str:
+    """How the choice was made, as inline SVG figures (a plot that fails is named in its place)."""
+    import matplotlib.pyplot as plt
+
+    from .page import figure_svg
+
+    try:
+        figs = _figures(t, result)
+    except Exception as exc:  # a plot that fails must not lose the report: say so in its place
+        return note(f"figures not drawn: {type(exc).__name__}: {exc}")
+    out = []
+    for k, (fig, caption) in enumerate(figs):
+        out.append(figure_svg(fig, f"choice-{t}-{k}", caption))
+        plt.close(fig)
+    return "".join(out)
+
+
 def circuits_section(ctx) -> str:
     """Section 2: for each designed circuit its schematic, its parts with ratings, what binds and the margins."""
     out = [MARGIN_MATH]
@@ -108,6 +156,9 @@ def circuits_section(ctx) -> str:
                 f"<p><b>What binds:</b> {esc(str(result.binding))}</p>",
                 "<h4>Chosen parts and their ratings</h4>", parts_table([r for r in ctx.bom if r["sheet"] == sheet]),
                 "<h4>Margins</h4>", margins_table(t, result) or note("this design states no margin as a fraction"),
+                "<h4>How the choice was made</h4>", choice_figures(t, result) or note("every candidate core is "
+                                                                                   "evaluated: the table above "
+                                                                                   "is the choice"),
                 f"<details open><summary>Every result of [{esc(t)}]</summary>{results_table(t, result)}</details>"]
     return "".join(out)
 
@@ -156,7 +207,9 @@ def assumptions(ctx) -> list[tuple[str, str, str]]:
 def notes_section(ctx) -> str:
     """Section 7: every design's warnings, SPICE's, the assumptions made, and what the report was made from."""
     out = ["<h3>Warnings</h3>"]
-    warned = [(t, w) for t, r in ctx.designed.items() for w in r.warnings] + list(ctx.spice_warnings)
+    warned = [(t, f"cannot be met, so not designed: {why}") for t, why in ctx.unmet.items()]
+    warned += [(t, w) for t, r in ctx.designed.items() for w in r.warnings]
+    warned += list(dict.fromkeys(ctx.spice_warnings))  # once each, though a section be written twice
     out.append("<ul>" + "".join(f'<li class="warn"><code>[{esc(t)}]</code> {esc(w)}</li>' for t, w in warned) + "</ul>"
                if warned else "<p>None: no design warned.</p>")
     out.append("<h3>Assumptions made</h3><p>Keys whose default is the handbook's assumption, not a datasheet's "

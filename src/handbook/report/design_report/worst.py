@@ -4,6 +4,7 @@ value (EVA), root-sum-square (RSS) and Monte Carlo bounds beside its limits and 
 Monte Carlo samples, the distributions assumed, the sensitivity ranking and the drift sentences."""
 from __future__ import annotations
 
+from ...core.units import readable
 from .page import esc, figure_svg, note, table, value
 from .sections import title
 
@@ -57,7 +58,7 @@ def histogram(t: str, q, samples) -> str:
     x = np.asarray(samples, dtype=float) * scale
     fig = Figure(figsize=(6.4, 2.4))
     ax = fig.add_subplot()
-    ax.hist(x[np.isfinite(x)], bins=80, color="#4878a8")
+    ax.hist(x[np.isfinite(x)], bins=80, color="#4878a8", histtype="stepfilled")  # one path, not a bar per bin
     ax.axvline(q.nominal * scale, color="k", lw=1, label="nominal")
     for k, v in enumerate(b for b in (q.eva_low, q.eva_high) if b is not None):
         ax.axvline(v * scale, color="0.4", ls=":", lw=1, label="EVA" if k == 0 else None)
@@ -86,9 +87,12 @@ def one(t: str, wc) -> str:
     out += [histogram(t, q, wc.samples[q.key]) for q in wc.quantities if q.key in wc.samples]
     out.append("<h4>Distributions assumed</h4>")
     out.append(table(["part", "distribution", "low", "high", "source"],
-                     [[esc(d.part), esc(d.kind), f"{d.low:.6g}", f"{d.high:.6g}", esc(d.cite)] for d in wc.distributions],
+                     [[esc(d.part), esc(d.kind), value(f"wc.{t}.dist.{d.part}.low", d.low, d.unit or "1"),
+                       value(f"wc.{t}.dist.{d.part}.high", d.high, d.unit or "1"), esc(readable(d.cite))]
+                      for d in wc.distributions],
                      (2, 3)))
     binding = getattr(wc, "binding", "")
+    binding = next((q.label for q in wc.quantities if q.key == binding), binding)  # as the tables above name it
     out.append("<h4>Sensitivity: what the spread comes from</h4>" + (
         f"<p>Ranked for the quantity with the least worst-case margin: <b>{esc(binding)}</b> (another quantity "
         "can rank its sources differently).</p>" if binding else ""))
@@ -96,7 +100,7 @@ def one(t: str, wc) -> str:
                      [[esc(s.source), _share(s.share), _share(s.margin_if_halved), _share(s.yield_if_halved)]
                       for s in wc.sensitivity], (1, 2, 3)))
     if wc.drift:
-        out.append("<h4>Drift</h4><ul>" + "".join(f"<li>{esc(s)}</li>" for s in wc.drift) + "</ul>")
+        out.append("<h4>Drift</h4><ul>" + "".join(f"<li>{esc(readable(s))}</li>" for s in wc.drift) + "</ul>")
     return "".join(out)
 
 
