@@ -137,7 +137,9 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
     result["v_drop"] = float(v["i_trip_max"]) * r7 * (1 - s["r7_tolerance"])  # I = V_cs / R7: highest at R7's low end
     if board and result["v_drop"] > s["v_drop_max"]:  # R7 is the smallest that meets the window: no larger one drops less
         text, levers = drop_levers(s)
-        raise Infeasible(TABLE, f"the smallest R7 that keeps every corner inside {s['i_no_trip']:g} .. "
+        kept = ("keeps every corner" if s["criterion"] == "corners" else
+                f"keeps a Monte Carlo lot at yield_min = {s['yield_min']:g} (criterion = yield)")
+        raise Infeasible(TABLE, f"the smallest R7 that {kept} inside {s['i_no_trip']:g} .. "
                          f"{s['i_must_trip']:g} A is {eng(r7, 'Ω', 3)}, which drops {result['v_drop']:.3g} V at the "
                          f"highest trip current, more than v_drop_max = {s['v_drop_max']:g} V: allow that drop, widen the "
                          "window or tighten the tolerances (the divider errors reach the trip multiplied by about "
