@@ -84,6 +84,28 @@ def test_amplifier_signs_are_upright_and_at_the_inputs_the_netlist_wires(k):
         assert not plus & {bare(n) for n, _ in net(drawing, op.in1)}, f"{circuit.id}: − meets the + side"
 
 
+def test_the_speed_loops_alternative_wiring_is_drawn_as_an_engineer_accepts_it():
+    """The speed loop with R2 in series from AMP OUT to T1's base (speed_loop's "series" wiring): the same checks
+    as every circuit's drawing, and R2 wired between the OTA's output and T1's base instead of from V_S."""
+    from handbook.spice import speed, speed_loop
+
+    drawing = speed_loop.drawing("series")
+    rendered = render(drawing)
+    assert faults(drawing, rendered) == []
+    strings = [t for t, _, _ in texts(*rendered)]
+    assert style_faults(strings) == []
+    on_figure = parts_in([plain(t) for t in strings])
+    for p in speed._parts(speed.defaults()):
+        assert bare(p.ref) in on_figure and (on_figure[bare(p.ref)] == p.value if isinstance(p.value, str)
+                                             else on_figure[bare(p.ref)] == pytest.approx(p.value, rel=1e-3))
+    r2 = _element(drawing, "R2")
+    ends = [net(drawing, pt) for pt in (r2.start, r2.end)]  # AMP OUT (the OTA's output) and T1's base
+    assert {("Opamp", "out"), ("T1", "base")} <= ends[0] | ends[1] and not any(n == "V_S" for e in ends for n, _ in e)
+    book = speed.circuit().draw()
+    r2_book = _element(book, "R2")
+    assert ("V_S", "end") in net(book, r2_book.start) and ("T1", "base") in net(book, r2_book.end)  # the pull-up
+
+
 def test_the_limiter_polarity_table_is_the_netlists_own():
     """POLARITY's limiter rows from the deck itself: U1's first node is + (the LM358 subcircuit's pin order),
     and the resistors on that node are the ones + must meet."""

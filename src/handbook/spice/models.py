@@ -152,18 +152,47 @@ def bd434(name: str = "BD434", **figures) -> list[str]:
             f"RE={m['re']:g} RC={m['rc']:g} CJE={m['cje']:g} CJC={m['cjc']:g} TF={m['tf']:g})"]
 
 
-def bd434_hfe(i_c: float, v_cb: float = 0.0, **figures) -> float:
-    """h_FE of :func:`bd434` at collector current ``i_c`` and collector-base voltage ``v_cb`` (reverse bias,
-    positive), as a datasheet's h_FE curves would give it: BF falling at high current as BF / (1 + I_C / IKF)
-    (the high-injection knee) and rising with V_CB as 1 + V_CB / VAF (the Early effect)."""
-    m = {**BD434, **figures}
-    return m["bf"] * (1 + v_cb / m["vaf"]) / (1 + i_c / m["ikf"])
+def bd434_dc(i_c: float, v_ec: float, **figures) -> tuple[float, float]:
+    """(h_FE, V_EB) of :func:`bd434` at collector current ``i_c`` and emitter-collector voltage ``v_ec`` (its
+    terminals), by the Gummel-Poon DC equations ngspice solves for that model at 27 C, in full: the base charge
+    q_b = q_1 (1 + sqrt(1 + 4 q_2)) / 2 with q_1 = 1 / (1 - V_BC / VAF) (the Early effect) and q_2 = I_BE / IKF (high
+    injection), I_C = (I_BE - I_BC) / q_b - I_BC / BR, I_B = I_BE / BF + I_BC / BR, the junction voltages inside RB,
+    RE and RC. What a datasheet's h_FE curve and V_BE(sat) curve would give; solved by bisection on the internal
+    emitter-base voltage, the internal emitter-collector voltage iterated (its drops are milliohms times amperes).
 
+    Parameters
+    ----------
+    i_c : float
+        Collector current (its magnitude), A, > 0.
+    v_ec : float
+        Emitter-collector voltage at the terminals, V (the transistor in its active region: above about 0.3 V).
+    **figures
+        Overrides of :data:`BD434`.
 
-def bd434_vbe(i_c: float, temp_c: float = 27.0, **figures) -> float:
-    """V_EB of :func:`bd434` at ``i_c`` by the diode law, V_T ln(I_C / IS), with the base and emitter
-    resistances' drops (ngspice's default 27 C)."""
+    Returns
+    -------
+    tuple of float
+        (h_FE = I_C / I_B, V_EB at the terminals in V).
+    """
     m = {**BD434, **figures}
-    hfe = bd434_hfe(i_c, 0.0, **figures)
-    return (K_Q * (273.15 + temp_c) * math.log(i_c * (1 + i_c / m["ikf"]) / m["is"]) + i_c / hfe * m["rb"]
-            + i_c * (1 + 1 / hfe) * m["re"])
+    vt = K_Q * (273.15 + 27.0)
+    br = 5.0  # the model line's BR
+
+    def currents(v_eb_i: float, v_ec_i: float) -> tuple[float, float]:
+        i_be = m["is"] * math.expm1(v_eb_i / vt)
+        v_bc_i = v_eb_i - v_ec_i  # the collector junction, forward sense (negative: reverse biased)
+        i_bc = m["is"] * math.expm1(v_bc_i / vt)
+        q1 = 1 / (1 - v_bc_i / m["vaf"])
+        qb = q1 / 2 * (1 + math.sqrt(1 + 4 * i_be / m["ikf"]))
+        return (i_be - i_bc) / qb - i_bc / br, i_be / m["bf"] + i_bc / br
+
+    v_ec_i, i_b = v_ec, 0.0
+    for _ in range(20):
+        lo, hi = 0.0, 1.5
+        for _ in range(200):
+            mid = (lo + hi) / 2
+            lo, hi = (mid, hi) if currents(mid, v_ec_i)[0] < i_c else (lo, mid)
+        v_eb_i = (lo + hi) / 2
+        i_b = currents(v_eb_i, v_ec_i)[1]
+        v_ec_i = v_ec - (i_c + i_b) * m["re"] - i_c * m["rc"]
+    return i_c / i_b, v_eb_i + i_b * m["rb"] + (i_c + i_b) * m["re"]

@@ -17,7 +17,7 @@ R4 x I_sink / g_m. With I_C = V_mot (1 / R_M + 1 / (R3 + R4)) and I_sink = V_EB 
     V_mot = (R3 + R4) / R4 x (V_in - V_EB / (g_m R2)) / (1 + (R3 + R4) / R4 x G / (g_m h_FE)),
 
 G = 1 / R_M + 1 / (R3 + R4). The checks put that shortfall into the equation column, with h_FE and V_EB of
-the BD434 at its operating current (:func:`models.bd434_hfe`, :func:`models.bd434_vbe`, assumed figures):
+the BD434 at its operating point (:func:`models.bd434_dc`: the model's Gummel-Poon equations; assumed figures):
 the model and the equation take the same figures, so no verdict rests on them; the tests vary them.
 
 At DC C8 carries no current: the DC checks do not see R1 and C8. :func:`loop_filter` is the same loop in
@@ -43,6 +43,9 @@ from .timers import BOARD, element_lines, label
 #: OTA figures: transfer gain, largest sink current, output saturation typ and max (TDA5144 datasheet)
 OTA_GM, OTA_SINK, OTA_SAT = 0.3, 40e-3, (1.5, 2.1)
 R_MOTOR = 10.0  # ohm: the motor as a resistor (assumption: about 1 A at 10 V)
+#: the DC rows' tolerance: the sweep's 5 mV grid interpolated and ngspice's converged solution (the equations take
+#: T1 by the model's own Gummel-Poon equations, so nothing of the physics is left out)
+GRID_RTOL = 1e-4
 
 
 def defaults() -> dict:
@@ -55,9 +58,8 @@ def defaults() -> dict:
 def t1_figures(v_mot: float, q: dict) -> tuple[float, float, float]:
     """(I_C, h_FE, V_EB) of T1 at the operating point where the loop holds ``v_mot`` at the lowest supply."""
     i_c = v_mot / q["r_motor"] + v_mot / (q["r3"] + q["r4"])
-    v_eb = models.bd434_vbe(i_c, **q["t1"])
-    v_cb = q["v_supply"] * (1 - q["supply_tolerance"]) - v_mot - v_eb
-    return i_c, models.bd434_hfe(i_c, max(v_cb, 0.0), **q["t1"]), v_eb
+    hfe, v_eb = models.bd434_dc(i_c, q["v_supply"] * (1 - q["supply_tolerance"]) - v_mot, **q["t1"])
+    return i_c, hfe, v_eb
 
 
 def i_sink(v_mot: float, q: dict) -> float:
@@ -127,34 +129,34 @@ def circuit(p: dict | None = None) -> Circuit:
     k10 = 1 / note.v_in_for(1.0, q["r3"], q["r4"])  # eq 10: V_mot = (R3 + R4) / R4 x V_in
     meas += [f".meas dc short_top PARAM='{k10 * hi_in:.9g}-vmot_top'",
              f".meas dc short_low PARAM='{k10 * lo_in:.9g}-vmot_low'"]
+    grid = ("the DC sweep's 5 mV grid, interpolated linearly (V_mot is linear in V_in but for h_FE's change over one "
+            "step; seen below 0.001 %), and ngspice's converged solution: ±0.01 %")
     gain = ("the equation is eq 10 less the OTA's input difference I_sink / g_m times (R3 + R4) / R4 "
-            f"({top['dv_mot']:.3g} V at the top, {low['dv_mot'] * 1e3:.3g} mV at the low end), with T1's h_FE "
-            "(its high-current knee and Early effect) and V_EB at its operating point from the same assumed BD434 "
-            "figures the model has, so the verdict does not rest on them (the tests vary them). Left out: the "
-            "second-order terms of the Gummel-Poon base charge (h_FE to about 0.4 %, 0.05 % of V_mot over BF 50 "
-            "to 200) and the DC sweep's 5 mV grid, interpolated: ±0.2 %")
-    vin_why = ("eq 10 plus I_sink / g_m at that operating point; the same residue as the V_mot checks: ±0.2 %")
+            f"({top['dv_mot']:.3g} V at the top, {low['dv_mot'] * 1e3:.3g} mV at the low end), with T1's h_FE and V_EB "
+            "at its operating point from the model's own Gummel-Poon equations (base charge, Early effect, high "
+            "injection, RB, RE, RC: models.bd434_dc), so the verdict does not rest on the assumed BD434 figures (the "
+            "tests vary them). Left: " + grid)
+    vin_why = "eq 10 plus I_sink / g_m at that operating point (the same terms as the V_mot rows). Left: " + grid
     checks = (
         Check("speed-vmot-top", "V_mot at the top of the V_in range (lowest supply)", "V", top["v_mot"], "vmot_top",
-              0.002, gain),
-        Check("speed-vmot-low", "V_mot at the lowest running V_in", "V", low["v_mot"], "vmot_low", 0.002, gain),
+              GRID_RTOL, gain),
+        Check("speed-vmot-low", "V_mot at the lowest running V_in", "V", low["v_mot"], "vmot_low", GRID_RTOL, gain),
         Check("speed-vin-top", "V_in that gives the highest controllable V_mot (eq 10 plus the OTA's difference)",
-              "V", v_in_loop(v_top, q), "vin_top", 0.002, vin_why),
+              "V", v_in_loop(v_top, q), "vin_top", GRID_RTOL, vin_why),
         Check("speed-vdiff-top", "OTA input difference at the top of the V_in range (I_sink / g_m)", "V",
-              top["v_diff"], "vdiff_top", 0.005,
-              "I_sink = V_EB / R2 + I_C / h_FE with h_FE's knee and Early effect in their first-order forms; the "
-              "model's base charge couples them (0.4 % seen with V_AF = 20 V, 0.06 % with the defaults): ±0.5 %"),
+              top["v_diff"], "vdiff_top", GRID_RTOL,
+              "I_sink = V_EB / R2 + I_C / h_FE, h_FE and V_EB by the model's Gummel-Poon equations at T1's operating "
+              "point. Left: " + grid),
         *(Check(f"speed-eq10-{tag}", f"eq 10 as printed ({eq10:.4g} V) minus SPICE's V_mot, {where}: the OTA's "
                 "shortfall", "V", sf["dv_mot"], f"short_{tag}", rtol,
                 f"eq 10 as printed takes an OTA of infinite gain; SPICE's loop falls short of it by "
                 f"{sf['dv_mot'] / eq10:.1%} of V_mot, the OTA's input difference I_sink / g_m times (R3 + R4) / R4 "
-                f"(module text). The difference itself is the equation: I_sink from the same assumed BD434 h_FE and "
-                f"V_EB the model has, so it tests the loop analysis, not the BD434 figures. Left: the base charge's "
-                f"second-order terms (0.05 % of V_mot, {0.0005 * sf['v_mot'] * 1e3:.2g} mV) and the 5 mV grid "
-                f"interpolated (1 mV): ±{rtol * 100:.2g} % of the shortfall")
+                f"(module text). The difference itself is the equation: I_sink from the same assumed BD434 figures "
+                f"the model has, so it tests the loop analysis, not the BD434 figures. Left: the V_mot rows' ±0.01 % "
+                f"of V_mot ({GRID_RTOL * sf['v_mot'] * 1e3:.2g} mV), ±{rtol * 100:.2g} % of the shortfall")
           for tag, where, sf, eq10, rtol in (
-              ("top", "top of the V_in range", top, k10 * hi_in, (0.0005 * top["v_mot"] + 1e-3) / top["dv_mot"]),
-              ("low", "lowest running V_in", low, k10 * lo_in, (0.0005 * low["v_mot"] + 1e-3) / low["dv_mot"]))))
+              ("top", "top of the V_in range", top, k10 * hi_in, GRID_RTOL * top["v_mot"] / top["dv_mot"]),
+              ("low", "lowest running V_in", low, k10 * lo_in, GRID_RTOL * low["v_mot"] / low["dv_mot"]))))
     return Circuit("speed", "Speed-control loop", "AN94002 2.2, figure 1 (wiring assumed: the figure is lost)", parts,
                    netlist(q, parts, tuple(meas)), checks, draw=lambda: draw(parts))
 
@@ -198,22 +200,31 @@ def sweep(p: dict | None = None, points: int = 31) -> dict:
     return {"v_in": v_in, "v_mot": [out[f"m{k}"] for k in range(points)]}
 
 
-def draw(parts):
-    """V_S, T1 from V_S to V_mot, R2 from V_S to its base (AMP OUT), R3/R4 to AMPIN+, the OTA (a current
-    output: it sinks from AMP OUT) with V_in on AMPIN-, fed from V_P and ground, R1 + C8, the motor R_M."""
+def draw(parts, wiring: str = "book"):
+    """V_S, T1 from V_S to V_mot, R3/R4 to AMPIN+, the OTA (a current output: it sinks from AMP OUT) with V_in on
+    AMPIN-, fed from V_P and ground, R1 + C8, the motor R_M; R2 from V_S to T1's base, which is AMP OUT (``wiring``
+    "book", this module's reading), or R2 in series from AMP OUT to T1's base ("series", :mod:`.speed_loop`'s
+    alternative)."""
     import schemdraw.elements as elm
 
     by = {p.ref: label(p) for p in parts}
     d = schematic.start(unit=2.5, fontsize=10)
-    top, base_x, out_y, xd = 11.0, 6.0, 3.0, 13.0
+    series = wiring == "series"
+    top, base_x, out_y, xd = 11.0, 6.0, 3.0, 15.0 if series else 13.0  # R2 in series takes 2 units more
     d.add(elm.SourceV().endpoints((-2, 0), (-2, top)).label(by["V_S"], loc="top"))
     d.add(elm.Ground().at((-2, 0)))
-    t1 = d.add(elm.BjtPnp(circle=True).theta(0).anchor("base").at((base_x + 1.5, 8.0)).label(by["T1"], loc="right"))
+    t1_x = base_x + (3.5 if series else 1.5)
+    t1 = d.add(elm.BjtPnp(circle=True).theta(0).anchor("base").at((t1_x, 8.0)).label(by["T1"], loc="right"))
     d.add(elm.Line().endpoints((-2, top), (t1.emitter[0], top)))
     d.add(elm.Line().endpoints(t1.emitter, (t1.emitter[0], top)))
-    d.add(elm.Resistor().endpoints((base_x, top), (base_x, 8.0)).label(by["R2"], loc="top"))
-    d.add(elm.Line().endpoints((base_x, 8.0), t1.base))
-    for pt in ((base_x, top), (base_x, 8.0), (base_x, 5.5)):
+    if series:  # AMP OUT, R2, T1's base
+        d.add(elm.Resistor().endpoints((base_x, 8.0), t1.base).label(by["R2"], loc="top"))
+        dots = ((base_x, 5.5),)
+    else:  # R2 pulls the base, which is AMP OUT, up to V_S
+        d.add(elm.Resistor().endpoints((base_x, top), (base_x, 8.0)).label(by["R2"], loc="top"))
+        d.add(elm.Line().endpoints((base_x, 8.0), t1.base))
+        dots = ((base_x, top), (base_x, 8.0), (base_x, 5.5))
+    for pt in dots:
         d.add(elm.Dot().at(pt))
     vmot = (t1.collector[0], 6.0)
     d.add(elm.Line().endpoints(t1.collector, vmot))

@@ -144,3 +144,22 @@ def compare(p: dict | None = None) -> dict:
             s = loop_gain({**(p or {}), "wiring": wiring, "rc": rc})
             out[wiring, rc] = margins(s["f"], s["t"])
     return out
+
+
+def drawing(wiring: str = "series", p: dict | None = None):
+    """The loop's schematic in ``wiring`` (:data:`WIRINGS`) with the DC chapter's parts (:func:`.speed.draw`).
+
+    Parameters
+    ----------
+    wiring : str
+        "book" or "series".
+    p : dict, optional
+        Overrides of :func:`.speed.defaults`.
+
+    Returns
+    -------
+    schemdraw.Drawing
+    """
+    if wiring not in WIRINGS:
+        raise ValueError(f"wiring {wiring!r}: one of {', '.join(WIRINGS)}")
+    return speed.draw(speed._parts(with_defaults(speed.defaults(), p)), wiring)
