@@ -5,9 +5,8 @@ import math
 
 import numpy as np
 
-from ...sources.an94002 import circuit as an94002
 from . import model as net
-from .model import checked, zener_range
+from .model import checked
 
 #: what spreads the trip current, and the spec keys that set each (zeroed one at a time by sensitivity)
 SPREAD_SOURCES = {"R9..R13 tolerance": ("resistor_tolerance",), "R7 tolerance": ("r7_tolerance",),
@@ -48,7 +47,10 @@ def sensitivity(r7: float, network, s: dict) -> list[tuple[str, float, float]]:
 
 
 def monte_carlo_trip(r7: float, network, s: dict, n: int = 100_000, seed: int = 1) -> dict:
-    """Trip currents of ``n`` boards, every part uniform within its tolerance (fixed seed, vectorised).
+    """A production lot of ``n`` boards (fixed seed, vectorised): the design report's own lot
+    (:mod:`handbook.design.worstcase.limiter`: every part uniform within its tolerance, the zener's tempco within
+    the BZX79's range, each board at both ends of ``temp_span``), so the chapters' histograms and the report's
+    yields are of one lot.
 
     Parameters
     ----------
@@ -66,31 +68,24 @@ def monte_carlo_trip(r7: float, network, s: dict, n: int = 100_000, seed: int = 
     Returns
     -------
     dict
-        "yield": the fraction of boards whose trip current lies within ``i_no_trip`` .. ``i_must_trip`` (no
-        margin); "i_p001" and "i_p999": the 0.1 % and 99.9 % quantiles of the trip current, A; "i_min" and
-        "i_max": its lowest and highest, A (floats); "samples": every board's trip current, A (numpy.ndarray,
-        shape (n,)).
+        "yield": the fraction of boards whose trip current lies within ``i_no_trip`` .. ``i_must_trip`` at both
+        ends of the temperature span (no margin); "i_p001": the 0.1 % quantile of the boards' lowest trip currents,
+        "i_p999": the 99.9 % quantile of their highest, A; "i_min" and "i_max": the lot's lowest and highest, A
+        (floats); "samples": every board's trip current at both ends of the span, A (numpy.ndarray, shape (2 n,)).
 
     Raises
     ------
     InputError
         When ``s`` is invalid (:func:`~handbook.design.limiter.model.checked`).
     """
+    from ..worstcase import engine
+    from ..worstcase import limiter as board
+
     s = checked(s)
-    rng = np.random.default_rng(seed)
-    t = s["resistor_tolerance"]
-
-    def u(x, tol):
-        return x * (1 + rng.uniform(-tol, tol, n))
-
-    vz_lo, vz_hi = zener_range(s)
-    r9, r10, r11, r12, r13 = (u(x, t) for x in network)
-    ios = min(s["input_offset_current"], 2 * s["input_bias"])
-    common = rng.uniform(-1, 1, n) * (s["input_bias"] - ios / 2)  # both inputs the same way, differing by <= I_os
-    half = rng.uniform(-ios / 2, ios / 2, n)
-    v = (an94002.v_cs_trip(rng.uniform(vz_lo, vz_hi, n), r9, r10, r11, r12, r13, rng.uniform(-s["offset"], s["offset"], n))
-         + (common + half) * r12 - (common - half) * (r9 + r10) * r11 / (r9 + r10 + r11) * (1 + r12 / r13))
-    i = v / u(r7, s["r7_tolerance"])
-    ok = (i >= s["i_no_trip"]) & (i <= s["i_must_trip"])
-    return {"yield": float(ok.mean()), "i_p001": float(np.quantile(i, 0.001)),
-            "i_p999": float(np.quantile(i, 0.999)), "i_min": float(i.min()), "i_max": float(i.max()), "samples": i}
+    m = board.model(r7, network, s)
+    lot = engine.evaluate(m, engine.draw(m, n, seed))
+    low, high = lot["i_trip_low"], lot["i_trip_high"]
+    ok = (low >= s["i_no_trip"]) & (high <= s["i_must_trip"])
+    return {"yield": float(ok.mean()), "i_p001": float(np.quantile(low, 0.001)),
+            "i_p999": float(np.quantile(high, 0.999)), "i_min": float(low.min()), "i_max": float(high.max()),
+            "samples": np.concatenate([low, high])}

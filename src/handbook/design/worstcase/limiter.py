@@ -5,16 +5,14 @@ bias currents of :mod:`handbook.design.limiter.model`) applied to arrays.
 Quantities: ``i_trip_low`` (each board's lowest trip current over 25 C +- ``temp_span``; limit ``i_no_trip``),
 ``i_trip_high`` (its highest; limit ``i_must_trip``) and ``headroom`` (the least distance of either op-amp input
 below the supply, D1 at its coldest-or-hottest low end; limit ``input_headroom``). The design's corners hold the
-margins ``min_margin`` inside the window; the yields here are against the window itself (no margin), as
-:func:`handbook.design.limiter.monte_carlo_trip` counts them.
+margins ``min_margin`` inside the window; the yields here are against the window itself (no margin).
+:func:`handbook.design.limiter.monte_carlo_trip` (the chapters' histograms) draws this same lot.
 
 Each board is judged at its worst temperature: its zener's drift is its own tempco times +-``temp_span``, so the
-board's zener spans V_Z -+ |tc| ``temp_span``, and |tc| (uniform in 0 .. ``zener_tc`` when tc is uniform in
-+-``zener_tc``) is the varying input. The bias currents vary as the corners take them: the two inputs' average
-within +-``input_bias``, their difference within +-``input_offset_current`` (the parallelogram of
-:func:`~handbook.design.limiter.model.bias_error`). :func:`handbook.design.limiter.monte_carlo_trip` draws the
-average within +-(I_b - I_os/2) and one temperature-blind zener range, so its lot is not the corners' box; it is
-not reused here.
+board's zener spans V_Z -+ |tc| ``temp_span``, and |tc| (uniform in 0.375 x ``zener_tc`` .. ``zener_tc``, the
+BZX79's +0.03..+0.08 %/K) is the varying input. The bias currents vary as the corners take them: the two inputs'
+average within +-``input_bias``, their difference within +-``input_offset_current`` (the parallelogram of
+:func:`~handbook.design.limiter.model.bias_error`).
 """
 from __future__ import annotations
 
