@@ -275,9 +275,11 @@ def converter_rows(cv) -> list[dict]:
              f"{cv.core_material}, gapped to A_L {eng(cv.a_l, 'H')}", package=f"{cv.core_shape} set on its bobbin",
              rating_text=f"saturates at about {eng(i_sat, 'A')} at {t_a + cv.temperature_rise:.3g} °C; the worst "
                          f"peak {eng(cv.i_peak_max, 'A')} leaves {cv.saturation_margin:.0%}",
-             reason=f"eq 6: L1 {eng(cv.l1, 'H')} at most; rise {cv.temperature_rise:.2g} K"),
+             reason=f"eq 6 in the slow corner: {eng(cv.l1_max, 'H')} at most at +{s['a_l_tolerance']:.0%} A_L; rise "
+                    f"{cv.temperature_rise:.2g} K"),
         _resistor(sheet, "R1", "current-sense resistor", cv.r1_part, s["r1_tolerance"], s["r1_series"], p_r1, t_a,
-                  f"eq 6a: V12(H) / I_peak = {eng(cv.r1, 'Ω')}, rounded down"),
+                  f"eq 6a in the device corner that delivers least: {eng(cv.r1_worst, 'Ω')} / (1 + "
+                  f"{s['r1_tolerance']:.0%}), rounded down"),
     ]
 
 

@@ -117,7 +117,8 @@ def _converter() -> tuple[Param, ...]:
     """The TCA5600/TCF5600 dc/dc converter (excerpt, figures 13 and 14, eq 1 to 6a) and its coil's limits.
 
     No public copy of the TCA5600's electrical characteristics was found (Motorola TCA5600/TCF5600): V12(H),
-    V_CE(sat) and V_F are the converter chapter's assumed figures, the operating point its assumed board."""
+    V_CE(sat) and V_F are the converter chapter's assumed figures, taken at every corner of +-device_spread, the
+    operating point its assumed board."""
     return (
         Param(name="v_supply_min", default=8.0, unit="V", low=0.5, high=60.0,
               meaning="VCC2 at its lowest (the operating point that sizes the coil)",
@@ -131,21 +132,27 @@ def _converter() -> tuple[Param, ...]:
         Param(name="i_out", default=0.05, unit="A", high=10.0, **_POS, meaning="Iout2 at its largest",
               cite="assumption (TCA5600 chapter)"),
         Param(name="f_min", default=20e3, unit="Hz", low=1e3, high=1e6,
-              meaning="lowest oscillation frequency at v_supply_min and full load, at every tolerance corner of "
-                      "R1 and A_L (eq 4; above the audio band)",
+              meaning="lowest oscillation frequency at v_supply_min and full load, at every corner of R1, A_L "
+                      "and the device figures (device_spread) (eq 4; above the audio band)",
               cite="TCA5600 excerpt, eq 4: 'chosen above the audio frequency band (e.g. 20 kHz)'"),
         Param(name="v_regulator_drop", default=2.5, unit="V", low=0.0, high=20.0,
               meaning="input-output drop V(pin 9 - pin 8) of the programmable regulator",
               cite="TCA5600 excerpt, eq 1: 2.5 V typical"),
-        Param(name="v_f", default=0.8, unit="V", low=0.0, high=5.0, meaning="forward drop V_F of the rectifier",
+        Param(name="v_f", default=0.8, unit="V", low=0.0, high=5.0,
+              meaning="forward drop V_F of the rectifier, nominal (+-device_spread)",
               cite="assumption: a silicon rectifier at a few hundred mA (no public characteristics)"),
         Param(name="v_ce_sat", default=0.5, unit="V", low=0.0, high=5.0,
-              meaning="saturation voltage V_CE(sat) of the internal switch",
+              meaning="saturation voltage V_CE(sat) of the internal switch, nominal (+-device_spread)",
               cite="assumption: a bipolar switch at a few hundred mA (no public characteristics)"),
         Param(name="v12h", default=0.4, unit="V", low=0.01, high=5.0,
-              meaning="current-sense threshold V12(H) across R1",
+              meaning="current-sense threshold V12(H) across R1, nominal (+-device_spread)",
               cite="assumption: comparator thresholds of this kind are a few hundred mV (no public "
                    "characteristics)"),
+        Param(name="device_spread", default=0.1, unit="1", low=0.0, high=0.5,
+              meaning="spread assumed either side of v12h, v_ce_sat and v_f, fraction: part-to-part spread and "
+                      "temperature drift together; the design holds at every corner of it, with R1's and A_L's "
+                      "tolerances",
+              cite="assumption: no public TCA5600 characteristics (TCA5600 chapter's reading note)"),
         Param(name="r1_tolerance", default=0.01, unit="1", **_FRACTION,
               meaning="tolerance of the sense resistor R1, fraction (in the worst case of the peak current)",
               cite="assumption: a 1 % thick-film or metal-film chip resistor, the tolerance E96 parts are sold with"),
@@ -157,8 +164,10 @@ def _converter() -> tuple[Param, ...]:
                    "ground to order (about +-5 um on the 50 um smallest gap)"),
         Param(name="saturation_margin_min", default=0.2, unit="1", low=0.0, high=0.9,
               meaning="least fraction of the core's saturation flux density (at t_ambient + the coil's rise, at "
-                      "its narrowest section) left at the highest peak current (R1 and A_L at their worst ends)",
-              cite="assumption: covers V12(H)'s spread and the comparator's delay (no public figures for either)"),
+                      "its narrowest section) left at the highest peak current (R1, A_L and V12(H) at their worst "
+                      "ends)",
+              cite="assumption: covers the comparator's delay (no public figure; V12(H)'s spread is "
+                   "device_spread's)"),
         Param(name="t_ambient", default=85.0, unit="C", low=-40.0, high=125.0,
               meaning="highest ambient temperature around the coil (saturation and copper are taken at "
                       "t_ambient + the rise)",

@@ -238,6 +238,11 @@ def _heat_corner(s, r) -> tuple[float, float]:
 # ----------------------------------------------------------------------------------------------
 # converter (TCA5600)
 
+def _figures(c: dict) -> str:
+    """V12(H), V_CE(sat) and V_F of one of the converter's corners, as the sheet writes them."""
+    return f"V12(H) {_at(c['v12h'], 'V')}, V_CE(sat) {_at(c['v_ce_sat'], 'V')}, V_F {_at(c['v_f'], 'V')}"
+
+
 def converter(r) -> list:
     """The TCA5600 dc/dc converter: eq 1 to 6a at the lowest supply, R1 from its series, the coil.
 
@@ -251,6 +256,8 @@ def converter(r) -> list:
     list of Step
         The steps, eq 1 first.
     """
+    from ..design.converter import corner
+
     s = r.spec
     here = "handbook.design.converter"
     v = {"V_{out2}": (s["v_out"], "V"), "V_{(9-8)}": (s["v_regulator_drop"], "V"), "V_F": (s["v_f"], "V"),
@@ -271,12 +278,16 @@ def converter(r) -> list:
                       {"V_{L-}": (r.vl_minus, "V"), "t_1": (r.t1, "s"), "I_{L(peak)}": (r.i_peak, "A")}, (r.l1, "H")),
         equation_step("Current-sense resistor", "tca5600-eq6a",
                       {"V_{12(H)}": (s["v12h"], "V"), "I_{L(peak)}": (r.i_peak, "A")}, (r.r1, "Ω")),
-        words(f"{s['r1_series']} R1 at or below R1 / (1 + {s['r1_tolerance']:g}) = "
-              f"{_at(r.r1 / (1 + s['r1_tolerance']), 'Ω')}: {_at(r.r1_part, 'Ω')}; the peak current reaches "
-              f"{_at(r.i_peak_max, 'A')} with R1 at its low end", (r.r1_part, "Ω"),
-              f"{here}: {s['r1_series']} series pick"),
+        words(f"Eq 1 to 6a again in the device corner that delivers least ({_figures(corner(s, 'weak'))}, "
+              f"±{_pct(s['device_spread'])}): R1 = {_at(r.r1_worst, 'Ω')}", (r.r1_worst, "Ω"),
+              f"{here}: device_spread (assumed; no public TCA5600 characteristics)"),
+        words(f"{s['r1_series']} R1 at or below {_at(r.r1_worst, 'Ω')} / (1 + {s['r1_tolerance']:g}) = "
+              f"{_at(r.r1_worst / (1 + s['r1_tolerance']), 'Ω')}: {_at(r.r1_part, 'Ω')}; at its high end in that "
+              f"corner it delivers {_at(r.i_out_least, 'A')}; the peak current reaches {_at(r.i_peak_max, 'A')} with "
+              f"V12(H) high and R1 at its low end", (r.r1_part, "Ω"), f"{here}: {s['r1_series']} series pick"),
         words(f"Inductance to wind so that L1 at +{_pct(s['a_l_tolerance'])} A_L still runs at f_min at the highest "
-              f"peak current: {_at(r.l1_nominal, 'H')}", (r.l1_nominal, "H"), f"{here}: A_L tolerance"),
+              f"peak current in the slow corner ({_figures(corner(s, 'slow'))}): {_at(r.l1_nominal, 'H')}",
+              (r.l1_nominal, "H"), f"{here}: A_L tolerance, device_spread"),
         words(f"Smallest core of the candidate set meeting every limit: {r.core_shape} in {r.core_material}, "
               f"{r.turns} turns, {r.wire}", (f"{r.core_shape}, {r.turns} turns", ""),
               f"{here}: exact enumeration of PyOpenMagnetics' cores, smallest first"),

@@ -15,7 +15,8 @@ def test_bom_rows(result):
     coil, r1 = rows["A4-L1"], rows["A4-R1"]
     assert coil["value"] == result.l1_nominal and coil["tolerance"] == 0.1 and "eq 6" in coil["reason"]
     assert "Ferroxcube" in coil["technology"] or "TDK" in coil["technology"]
-    assert (r1["value"], r1["tolerance"]) == (pytest.approx(1.91), 0.01) and r1["reason"].startswith("E96 value")
+    assert (r1["value"], r1["tolerance"]) == (pytest.approx(1.74), 0.01) and r1["reason"].startswith("E96 value")
+    assert "1.764 Ω / (1 + 1%), rounded down" in r1["reason"] and "696.2 µH at most at +10% A_L" in coil["reason"]
 
 
 def _cli(tmp_path, capsys, text, *extra):
@@ -27,13 +28,17 @@ def _cli(tmp_path, capsys, text, *extra):
 
 
 @pytest.mark.parametrize("text,needle", [
-    ("[converter]\nv_out = 3.0\n", "converter.v_out = 3 V must be above v_supply_min - v_regulator_drop - v_f = 4.7 V"),
+    # V_F at its low end, 0.72 V: 8 - 2.5 - 0.72 = 4.78 V
+    ("[converter]\nv_out = 3.0\n", "converter.v_out = 3 V must be above v_supply_min - v_regulator_drop - v_f x "
+                                   "(1 - device_spread) = 4.78 V"),
     ("[converter]\nf_min = 5e7\n", "converter.f_min = 50 MHz is out of range: use a value from 1 kHz to 1 MHz"),
     ("[converter]\nf_min = 500.0\n", "converter.f_min = 500 Hz is out of range: use a value from 1 kHz to 1 MHz"),
     ("[converter]\ni_out = -1\n", "converter.i_out = -1 A is out of range: use a value > 0 A and <= 10 A"),
     ("[commutation]\ni_charge_min = 22\n", "commutation.i_charge_min = 22 A is out of range: use a value > 0 A and "
                                            "<= 1 mA"),
-    ("[converter]\nv_supply_min = 0.8\n", "converter.v_supply_min = 0.8 V must be above v_ce_sat + v12h = 0.9 V"),
+    ("[converter]\nv_supply_min = 0.8\n", "converter.v_supply_min = 0.8 V must be above (v_ce_sat + v12h) x "
+                                           "(1 + device_spread) = 0.99 V"),
+    ("[converter]\ndevice_spread = 0.6\n", "converter.device_spread = 0.6 is out of range: use a value from 0 to 0.5"),
     ("[converter]\nv_supply_max = 7.5\n", "converter.v_supply_min = 8 V must not exceed converter.v_supply_max = "
                                            "7.5 V"),
     ("[converter]\nr1_series = 'E7'\n", "converter.r1_series = 'E7': use one of"),
@@ -61,23 +66,26 @@ def test_cli_json_si_bom_and_text_with_units(tmp_path, capsys):
     code, out, err = _cli(tmp_path, capsys, "[converter]\naudible = 'warn'\n", "--json", "--bom", str(tmp_path / "bom.csv"))
     assert code == 0, err
     r = json.loads(out)["converter"]
-    assert r["l1"] == pytest.approx(887.33e-6, rel=1e-4) and isinstance(r["gap"], float) and r["turns"] == 86
-    assert r["r1_part"] == pytest.approx(1.91) and r["binding"].startswith("current density")
-    assert r["f_sw_min"] == pytest.approx(4688, rel=1e-3)
+    assert r["l1"] == pytest.approx(887.33e-6, rel=1e-4) and isinstance(r["gap"], float) and r["turns"] == 64
+    assert r["r1_part"] == pytest.approx(1.74) and r["binding"].startswith("current density")
+    assert r["f_sw_min"] == pytest.approx(4345, rel=1e-3) and r["i_out_least"] == pytest.approx(0.05019, rel=1e-3)
     bom_text = (tmp_path / "bom.csv").read_text()
     assert "A4,A4-L1,1,\"converter coil, wound to order\"" in bom_text
-    assert "773.4 µH,0.1," in bom_text and "1.91 Ω,0.01," in bom_text
+    assert "632.9 µH,0.1," in bom_text and "1.74 Ω,0.01," in bom_text
     code, text, _ = _cli(tmp_path, capsys, "[converter]\naudible = 'warn'\n")
-    for needle in ("887.3 µH", "773.4 µH", "1.91 Ω", "202.8 mA", "211.5 mA", "25.35 µs", "E 8.3/4", "4.688 kHz",
-                   "24.94 kHz", "current density (the next smaller core"):
+    # eq 1 to 6a at the nominal figures; R1, L1 and the frequencies at the corners (test_converter_result's hand
+    # figures): 1.764 ohm in the corner that delivers least, 50.19 mA delivered there, 255.4 mA at the highest peak
+    for needle in ("887.3 µH", "632.9 µH", "1.764 Ω", "1.74 Ω", "50.19 mA", "202.8 mA", "255.4 mA", "25.35 µs", "EP 10",
+                   "4.345 kHz", "31.22 kHz", "current density (the next smaller core"):
         assert needle in text, needle
 
 
 def test_text_of_tiny_and_huge_values(tmp_path, capsys):
-    """A microampere spec designs (with warnings): henries, kilohms and thousands of turns shown with prefixes."""
+    """A microampere spec designs (with warnings): henries, kilohms and thousands of turns shown with prefixes
+    (R1 = 86.6 kohm: E96 below 88.20 kohm / 1.01; the coil 34.65 H at most, 6137 turns)."""
     code, text, err = _cli(tmp_path, capsys, "[converter]\ni_out = 1e-6\naudible = 'warn'\n")
     assert code == 0, err
-    for needle in ("44.37 H", "98.61 kΩ", "6874", "self-resonates"):
+    for needle in ("44.37 H", "98.61 kΩ", "86.6 kΩ", "34.65 H", "6137", "self-resonates"):
         assert needle in text, needle
 
 

@@ -1,16 +1,19 @@
 """The TCA5600 dc/dc converter by eq 1 to 6a, down to a real coil.
 
-* :mod:`.result`: the operating point (R1 from its series, L1 as a maximum), the result and its warnings;
+* :mod:`.operating`: the operating point at the corners of R1, A_L and the TCA5600's figures (R1 from its series,
+  L1 as a maximum, the frequency range, f_min raised out of the audio band);
+* :mod:`.result`: the spec checked, the choice of the coil, the result and its warnings;
 * :mod:`.coil`: a coil wound on one core of the database (turns, gap, wire, flux, losses, temperature rise);
 * :mod:`.cores`: the candidate cores, materials and wires, read from PyOpenMagnetics' database.
 """
 from ..common import explained
 from .coil import frequency, supplies
-from .result import AUDIO_BAND, ConverterResult, checked, choose, design, designed_at, source_params, sweep
+from .operating import AUDIO_BAND, corner, designed_at, source_params
+from .result import ConverterResult, checked, choose, design, sweep
 
 TABLE = "converter"
-#: the tolerances the converter's corners take, each zeroed in turn by :func:`sensitivity`
-TOLERANCES = ("r1_tolerance", "a_l_tolerance")
+#: the tolerances and spread the converter's corners take, each zeroed in turn by :func:`sensitivity`
+TOLERANCES = ("r1_tolerance", "a_l_tolerance", "device_spread")
 
 
 def enumerate(spec: dict | None = None) -> dict | None:
@@ -90,5 +93,5 @@ def sensitivity(result: ConverterResult) -> list[dict]:
     return rows
 
 
-__all__ = ["AUDIO_BAND", "TABLE", "TOLERANCES", "ConverterResult", "checked", "design", "enumerate", "explain", "frequency",
-           "sensitivity", "source_params", "supplies", "sweep"]
+__all__ = ["AUDIO_BAND", "TABLE", "TOLERANCES", "ConverterResult", "checked", "corner", "design", "enumerate", "explain",
+           "frequency", "sensitivity", "source_params", "supplies", "sweep"]

@@ -61,7 +61,7 @@ def v_top(s: dict) -> float:
     Parameters
     ----------
     s : dict
-        The checked ``[converter]`` table (SI units; temperatures in C).
+        The checked ``[converter]`` table or one of its corners (:func:`~.operating.corner`), SI units.
 
     Returns
     -------
@@ -77,7 +77,7 @@ def coil_voltages(s: dict, vcc: float) -> tuple[float, float]:
     Parameters
     ----------
     s : dict
-        The checked ``[converter]`` table (SI units; temperatures in C).
+        The checked ``[converter]`` table or one of its corners (:func:`~.operating.corner`), SI units.
     vcc : float
         The supply VCC2, V.
 
@@ -97,7 +97,7 @@ def frequency(s: dict, vcc: float, inductance: float, i_peak: float) -> float:
     Parameters
     ----------
     s : dict
-        The checked ``[converter]`` table (SI units; temperatures in C).
+        The checked ``[converter]`` table or one of its corners (:func:`~.operating.corner`), SI units.
     vcc : float
         The supply VCC2, V.
     inductance : float
@@ -122,7 +122,7 @@ def supplies(s: dict, n: int = SUPPLY_POINTS) -> list[float]:
     Parameters
     ----------
     s : dict
-        The checked ``[converter]`` table (SI units; temperatures in C).
+        The checked ``[converter]`` table or one of its corners (:func:`~.operating.corner`), SI units.
     n : int
         The number of points (at least 2 when the range is not a single point).
 
@@ -284,7 +284,8 @@ def gap_for(shape: dict, reluctance: float) -> float | None:
 
 def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tuple[float, list[float]]:
     """The iGSE core loss (W) at the largest flux swing (L_max, I_peak,max), the largest over the supply range
-    at full load, and the frequencies it was evaluated at.
+    at full load and over V_CE(sat)'s and V_F's ends (V12(H) high: the ``hot`` corners), and the frequencies it
+    was evaluated at.
 
     Parameters
     ----------
@@ -296,27 +297,28 @@ def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tup
     s : dict
         The checked ``[converter]`` table (SI units; temperatures in C).
     op : dict
-        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_max`` (H) and
-        ``i_peak_max`` (A) are read.
+        The operating point (:func:`~handbook.design.converter.operating.operating_point`): ``l1_max`` (H),
+        ``i_peak_max`` (A) and the ``hot`` corners (the spec at each of them) are read.
     turns : int
         The coil's turns.
 
     Returns
     -------
     tuple
-        (the core loss, W, the largest over nine supply points; the full-load frequencies it was evaluated at,
-        Hz, a list: the supply points where the converter switches).
+        (the core loss, W, the largest over nine supply points at each hot corner; the full-load frequencies it
+        was evaluated at, Hz, a list: the supply points where the converter switches).
     """
     delta_b = op["l1_max"] * op["i_peak_max"] / (turns * shape["ae"])
     worst, freqs = 0.0, []
-    for v in supplies(s, 9):
-        vl_plus, vl_minus = coil_voltages(s, v)
-        f = frequency(s, v, op["l1_max"], op["i_peak_max"])
-        if f <= 0:
-            continue
-        freqs.append(f)
-        duty = vl_plus / (vl_plus + vl_minus)  # t1 / (t1 + t2)
-        worst = max(worst, igse_density(material, delta_b, f, duty) * shape["ve"])
+    for hot in op["hot"]:
+        for v in supplies(hot, 9):
+            vl_plus, vl_minus = coil_voltages(hot, v)
+            f = frequency(hot, v, op["l1_max"], op["i_peak_max"])
+            if f <= 0:
+                continue
+            freqs.append(f)
+            duty = vl_plus / (vl_plus + vl_minus)  # t1 / (t1 + t2)
+            worst = max(worst, igse_density(material, delta_b, f, duty) * shape["ve"])
     return worst, freqs
 
 
@@ -332,7 +334,7 @@ def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | N
     s : dict
         The checked ``[converter]`` table (SI units; temperatures in C).
     op : dict
-        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_nominal`` and
+        The operating point (:func:`~handbook.design.converter.operating.operating_point`): ``l1_nominal`` and
         ``l1_max`` (H), ``i_peak_max`` and ``i_rms`` (A) are read.
     table : dict or None
         The cores table (:func:`~handbook.design.converter.cores.load`); None: the shipped one.
@@ -377,7 +379,7 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
     s : dict
         The checked ``[converter]`` table (SI units; temperatures in C).
     op : dict
-        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_nominal`` and
+        The operating point (:func:`~handbook.design.converter.operating.operating_point`): ``l1_nominal`` and
         ``l1_max`` (H), ``i_peak_max`` and ``i_rms`` (A) are read.
     n : int
         The turns.
@@ -453,7 +455,7 @@ def candidates(s: dict, op: dict) -> list[Coil]:
     s : dict
         The checked ``[converter]`` table (SI units; temperatures in C).
     op : dict
-        The operating point (:func:`~handbook.design.converter.result.operating_point`): ``l1_nominal`` and
+        The operating point (:func:`~handbook.design.converter.operating.operating_point`): ``l1_nominal`` and
         ``l1_max`` (H), ``i_peak_max`` and ``i_rms`` (A) are read.
 
     Returns

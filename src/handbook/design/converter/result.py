@@ -6,16 +6,18 @@ is zero, and the next charge starts (TCA5600 excerpt, figures 13 and 14). Eq 4's
 worst operating point (VCC2 lowest, Iout2 largest) at the boundary between continuous and discontinuous
 conduction; every lighter load lets the regulator's feedback stop the converter between cycles.
 
-Operating point: eq 1 to 6a by the source's own functions (:mod:`handbook.sources.tca5600.circuit`):
-alpha, t1, t2, I_peak, L1 and R1.
+Operating point: eq 1 to 6a by the source's own functions (:mod:`handbook.sources.tca5600.circuit`) at the
+nominal device figures: alpha, t1, t2, I_peak, L1 and R1.
 
-Parts and their tolerances. The peak current is V12(H)/R1 and the load the converter carries is
-I_peak/2 x V_L-/(V_L- + V_L+) whatever the inductance, so R1 is the series value (``r1_series``, E96 by
-default) at or below R1/(1 + ``r1_tolerance``): at its high end it still gives eq 5's I_peak. At its low end
-the peak current is I_peak,max = V12(H) / (R1 (1 - tol)). The frequency 1/(L I_peak (1/V_L- + 1/V_L+)) falls
-as L and I_peak grow, so eq 6's L1 is a largest inductance: the coil is wound for L1 I_peak / I_peak,max /
-(1 + ``a_l_tolerance``), which at +tolerance with I_peak,max still runs at f_min at the lowest VCC2. The
-switching frequency is reported over VCC2 = ``v_supply_min`` .. ``v_supply_max`` at every corner (it peaks
+Parts, their tolerances and the device's spread (:mod:`.operating`). V12(H), V_CE(sat) and V_F are taken at
+their corners, +-``device_spread`` (no public characteristics: spread and drift together). The peak current is
+V12(H)/R1 and the load the converter carries is I_peak/2 x V_L-/(V_L- + V_L+) whatever the inductance, so R1 is
+eq 6a at the device corner that delivers least (V12(H) low, V_CE(sat) and V_F high unless V_L- is nearly gone),
+fitted from its series (``r1_series``, E96 by default) at or below that R1/(1 + ``r1_tolerance``): at its high end
+it still delivers ``i_out``. With V12(H) high and R1 at its low end the peak current is I_peak,max. The frequency
+1/(L I_peak (1/V_L- + 1/V_L+)) falls as L, I_peak and V_CE(sat) grow and V_F falls, so the inductance that runs at
+f_min at the lowest VCC2 in that slow corner is a largest one: the coil is wound for it / (1 + ``a_l_tolerance``).
+The switching frequency is reported over VCC2 = ``v_supply_min`` .. ``v_supply_max`` at every corner (it peaks
 where V_L- = V_L+ and falls towards both ends: at the highest VCC2 it can fall into the audio band).
 
 Coil. For every candidate core (shape and material from PyOpenMagnetics' database, shipped as
@@ -35,7 +37,8 @@ the largest flux swing, the largest over the supply range at full load; the copp
 choice is the candidate of least effective volume that meets the saturation margin, the fit, the gap,
 ``temperature_rise_max`` and ``current_density_max`` in its thickest fitting wire (ties: the least loss);
 ``binding`` names the limit that rules out the next smaller core. With ``audible`` = "avoid" f_min is first
-raised until the full-load frequency stays above the audio band at every corner (:func:`inaudible_f_min`).
+raised until the full-load frequency stays above the audio band at every corner
+(:func:`~.operating.inaudible_f_min`).
 The candidate set is finite and every candidate is evaluated exactly,
 so enumeration is the exact optimum: no solver is needed and none is used. The frequency trade-off (higher
 f_min: a smaller L1 and core, more core loss per volume) is shown as a sweep over f_min in the design chapter.
@@ -47,9 +50,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ...core import InputError
-from ...core import series as eseries
 from ...core.units import eng
-from ...sources.tca5600 import circuit as tca5600
 from ...sources.tca5600 import data as tca5600_data
 from ..common import Result, Table, checked_table, completed, is_checked, ordered, reported
 from ..solvers import Infeasible
@@ -78,10 +79,22 @@ from .coil import (  # noqa: F401 (the coil's names are this module's too)
     v_top,
     wind,
 )
+from .operating import (  # noqa: F401 (the operating point's names are this module's too)
+    AUDIO_BAND,
+    DEVICE,
+    FAST,
+    HOT,
+    SLOW,
+    corner,
+    delivered,
+    designed_at,
+    inaudible_f_min,
+    operating_point,
+    source_params,
+    weakest,
+)
 
 TABLE = "converter"
-#: the upper end of the audio band (Hz): the excerpt's own example of a frequency above it
-AUDIO_BAND = 20e3
 #: assumption: the TCA5600's internal switch carries the peak current the excerpt's own R1 = 0.68 ohm sets at
 #: the assumed V12(H) = 0.4 V, about 0.59 A (no public maximum ratings were found): a warning above it
 SWITCH_I_MAX = 0.4 / tca5600_data.APPLICATION["r1"]
@@ -103,9 +116,11 @@ class ConverterResult(Result):
     i_peak: float = reported('A', 'peak coil current (eq 5)')
     l1: float = reported('H', 'coil inductance L1 (eq 6)')
     r1: float = reported('ohm', 'current-sense resistor R1 (eq 6a)')
-    r1_part: float = reported('ohm', 'R1 fitted (series value, R1/(1 + r1_tolerance) or below)')
-    i_peak_max: float = reported('A', 'highest peak coil current (R1 at its low end)')
-    l1_nominal: float = reported('H', 'inductance wound, nominal (f_min at +a_l_tolerance)')
+    r1_worst: float = reported('ohm', 'R1 by eq 5 and 6a at the device corner that delivers least (+-device_spread)')
+    r1_part: float = reported('ohm', 'R1 fitted (series value at or below that R1/(1 + r1_tolerance))')
+    i_out_least: float = reported('A', 'current delivered at v_supply_min, least over every corner')
+    i_peak_max: float = reported('A', 'highest peak coil current (V12(H) at its high end, R1 at its low end)')
+    l1_nominal: float = reported('H', 'inductance wound, nominal (f_min at +a_l_tolerance and the slow corner)')
     f_sw_min: float = reported('Hz', 'lowest full-load frequency, supply range and corners')
     f_sw_max: float = reported('Hz', 'highest full-load frequency, supply range and corners')
     core_shape: str = reported('', 'core shape')
@@ -134,28 +149,10 @@ class ConverterResult(Result):
     table = TABLE
 
 
-def source_params(s: dict) -> dict:
-    """The spec in the source functions' names (handbook.sources.tca5600.circuit).
-
-    Parameters
-    ----------
-    s : dict
-        The checked ``[converter]`` table (SI units; temperatures in C).
-
-    Returns
-    -------
-    dict
-        ``v_cc2_min``, ``v_out2``, ``regulator_drop``, ``v_f``, ``vce_sat``, ``v12h`` (V), ``i_out2`` (A) and
-        ``f_min`` (Hz), from ``v_supply_min``, ``v_out``, ``v_regulator_drop``, ``v_f``, ``v_ce_sat``, ``v12h``,
-        ``i_out`` and ``f_min``.
-    """
-    return {"v_cc2_min": s["v_supply_min"], "v_out2": s["v_out"], "i_out2": s["i_out"], "f_min": s["f_min"],
-            "regulator_drop": s["v_regulator_drop"], "v_f": s["v_f"], "vce_sat": s["v_ce_sat"], "v12h": s["v12h"]}
-
-
 def checked(spec: Mapping | None) -> Table:
     """The ``[converter]`` table completed with its defaults and checked: ranges, then the limits that
-    contradict each other (V_L+ and V_L- must be positive at ``v_supply_min``, the supply range ordered).
+    contradict each other (V_L+ and V_L- must be positive at ``v_supply_min`` at every corner of
+    ``device_spread``, the supply range ordered).
 
     Parameters
     ----------
@@ -176,52 +173,19 @@ def checked(spec: Mapping | None) -> Table:
     if is_checked(TABLE, spec):  # checked once, where it was read
         return spec
     s = completed(TABLE, spec)
-    above = s["v_supply_min"] - s["v_regulator_drop"] - s["v_f"]
+    spread = s["device_spread"]  # V_F at its low end, V_CE(sat) and V12(H) at their high ends
+    above = s["v_supply_min"] - s["v_regulator_drop"] - s["v_f"] * (1 - spread)
     if s["v_out"] <= above:
-        raise InputError(f"converter.v_out = {s['v_out']:g} V must be above v_supply_min - v_regulator_drop - v_f = "
-                         f"{above:g} V: the coil must dump upwards into the regulator's input (eq 1, V_L+ > 0)")
-    drops = s["v_ce_sat"] + s["v12h"]
+        raise InputError(f"converter.v_out = {s['v_out']:g} V must be above v_supply_min - v_regulator_drop - v_f x "
+                         f"(1 - device_spread) = {above:g} V: the coil must dump upwards into the regulator's input "
+                         "(eq 1, V_L+ > 0 at every corner)")
+    drops = (s["v_ce_sat"] + s["v12h"]) * (1 + spread)
     if s["v_supply_min"] <= drops:
-        raise InputError(f"converter.v_supply_min = {s['v_supply_min']:g} V must be above v_ce_sat + v12h = "
-                         f"{drops:g} V: the coil needs a voltage to charge (eq 2, V_L- > 0)")
+        raise InputError(f"converter.v_supply_min = {s['v_supply_min']:g} V must be above (v_ce_sat + v12h) x "
+                         f"(1 + device_spread) = {drops:g} V: the coil needs a voltage to charge (eq 2, V_L- > 0 at "
+                         "every corner)")
     ordered(TABLE, "v_supply_min", "v_supply_max", s, "V", strict=False)
     return checked_table(TABLE, s)
-
-
-def operating_point(s: dict) -> dict:
-    """Eq 1 to 6a (the source's functions), R1 fitted from its series, the peak currents at R1's tolerance,
-    the inductance to wind (A_L's tolerance), the frequency range over the supply, and the triangle's rms
-    current at the highest peak current, I_peak,max / sqrt(3).
-
-    Parameters
-    ----------
-    s : dict
-        The checked ``[converter]`` table (SI units; temperatures in C).
-
-    Returns
-    -------
-    dict
-        The source's eq 1 to 6a (``vl_plus``, ``vl_minus`` in V, ``alpha`` a pure number, ``t1``, ``t2`` in s,
-        ``i_peak`` in A, ``l1`` in H, ``r1`` in ohm) and ``r1_part`` (the series R1, ohm), ``i_peak_min`` and
-        ``i_peak_max`` (A, R1 at its high and low end), ``l1_max``, ``l1_nominal``, ``l1_min`` (H, A_L at +, 0
-        and - its tolerance), ``f_sw_min`` and ``f_sw_max`` (the full-load frequency's extremes over the supply
-        range and the corners, Hz), ``i_rms`` (A) and ``duty`` (t1 f_min, a fraction).
-    """
-    op = tca5600.design(source_params(s))
-    tol_r, tol_l = s["r1_tolerance"], s["a_l_tolerance"]
-    r1_part = eseries.at_most(s["r1_series"], op["r1"] / (1 + tol_r))
-    i_min, i_max = s["v12h"] / (r1_part * (1 + tol_r)), s["v12h"] / (r1_part * (1 - tol_r))
-    l_max = op["l1"] * op["i_peak"] / i_max  # at I_peak,max it still runs at f_min at v_supply_min
-    l_nom = l_max / (1 + tol_l)
-    l_min = l_nom * (1 - tol_l)
-    f_slow = [frequency(s, v, l_max, i_max) for v in supplies(s)]
-    if s["v_supply_max"] >= v_top(s):
-        f_slow.append(0.0)
-    v_peak = min(max((v_top(s) + s["v_ce_sat"] + s["v12h"]) / 2, s["v_supply_min"]), max(supplies(s)))
-    f_fast = max(frequency(s, v, l_min, i_min) for v in (*supplies(s), v_peak))
-    return {**op, "r1_part": r1_part, "i_peak_min": i_min, "i_peak_max": i_max, "l1_max": l_max, "l1_nominal": l_nom,
-            "l1_min": l_min, "f_sw_min": min(f_slow), "f_sw_max": f_fast, "i_rms": i_max / math.sqrt(3),
-            "duty": op["t1"] * s["f_min"]}
 
 
 def choose(s: dict) -> tuple[dict, list[Coil], Coil | None]:
@@ -365,16 +329,18 @@ def audio_band(s: dict, op: dict) -> tuple[float, float] | None:
     s : dict
         The checked ``[converter]`` table (SI units; temperatures in C).
     op : dict
-        The operating point (:func:`operating_point`): ``l1_max`` (H) and ``i_peak_max`` (A) are read.
+        The operating point (:func:`operating_point`): ``l1_max`` (H), ``i_peak_max`` (A) and the ``slow`` corner
+        (V_F low, V12(H) and V_CE(sat) high) are read.
 
     Returns
     -------
     tuple of float or None
         (lowest, highest) VCC2 of the 401 supply points in the band (and ``v_supply_max`` when it reaches
-        :func:`~.coil.v_top`, where the frequency is zero), V; None when no point is.
+        :func:`~.coil.v_top` at the slow corner, where the frequency is zero), V; None when no point is.
     """
-    points = [v for v in supplies(s, 401) if frequency(s, v, op["l1_max"], op["i_peak_max"]) < AUDIO_BAND]
-    if s["v_supply_max"] >= v_top(s):
+    slow = op["slow"]
+    points = [v for v in supplies(slow, 401) if frequency(slow, v, op["l1_max"], op["i_peak_max"]) < AUDIO_BAND]
+    if s["v_supply_max"] >= v_top(slow):
         points.append(s["v_supply_max"])
     return (min(points), max(points)) if points else None
 
@@ -404,9 +370,10 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
 
     table = cores.load()
     out = []
-    if s["v_supply_max"] >= v_top(s):
-        out.append(f"at VCC2 = {eng(v_top(s), 'V')} and above (v_supply_max = {eng(s['v_supply_max'], 'V')}) V_L+ "
-                   "vanishes: the coil no longer dumps against a voltage, the frequency falls to zero and VCC2 "
+    top = v_top(op["slow"])
+    if s["v_supply_max"] >= top:
+        out.append(f"at VCC2 = {eng(top, 'V')} and above (v_supply_max = {eng(s['v_supply_max'], 'V')}; V_F at its low "
+                   "end) V_L+ vanishes: the coil no longer dumps against a voltage, the frequency falls to zero and VCC2 "
                    "feeds the regulator through the coil and the rectifier")
     span = audio_band(s, op)
     if span is not None:
@@ -428,7 +395,7 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
         out.append(f"wire {eng(c.wire_diameter, 'm')} is thicker than twice the skin depth at "
                    f"{eng(op['f_sw_max'], 'Hz')} ({eng(skin, 'm')}): the copper loss (I_rms^2 R_dc) is underestimated")
     if op["i_peak_max"] > SWITCH_I_MAX:
-        out.append(f"the peak current reaches {eng(op['i_peak_max'], 'A')}, above the "
+        out.append(f"the peak current reaches {eng(op['i_peak_max'], 'A')} (V12(H) high, R1 low), above the "
                    f"{eng(SWITCH_I_MAX, 'A')} assumed for the TCA5600's internal switch (the excerpt's R1 = "
                    f"{eng(tca5600_data.APPLICATION['r1'], 'Ω')} at V12(H) = 400 mV; no public maximum ratings): "
                    "check the switch or use an external one")
@@ -456,8 +423,9 @@ def design(spec: dict | None = None) -> ConverterResult:
     Returns
     -------
     ConverterResult
-        The checked spec; eq 1 to 6a's alpha (pure number), t1, t2 (s), I_peak (A), L1 (H), R1 (ohm); the
-        fitted R1 (ohm), the peak currents (A), the inductances (H), the frequency range (Hz); the coil (shape,
+        The checked spec; eq 1 to 6a's alpha (pure number), t1, t2 (s), I_peak (A), L1 (H), R1 (ohm) at the
+        nominal device figures; R1 at the device corner that delivers least and the fitted R1 (ohm), the least
+        current delivered (A), the peak currents (A), the inductances (H), the frequency range (Hz); the coil (shape,
         material, turns, gap in m, A_L in H, wire, flux densities in T, losses in W, rise in K, saturation margin
         as a fraction); V_L+, V_L- (V) and I_rms (A); what binds, the warnings, every candidate and the next
         smaller one.
@@ -481,7 +449,7 @@ def design(spec: dict | None = None) -> ConverterResult:
     smaller = [c for c in every if c.ve < chosen.ve * (1 - 1e-9)]
     return ConverterResult(
         spec=given, f_min_design=s["f_min"], alpha=op["alpha"], t1=op["t1"], t2=op["t2"], i_peak=op["i_peak"],
-        l1=op["l1"], r1=op["r1"],
+        l1=op["l1"], r1=op["r1"], r1_worst=op["r1_worst"], i_out_least=op["i_out_least"],
         r1_part=op["r1_part"], i_peak_min=op["i_peak_min"], i_peak_max=op["i_peak_max"], l1_nominal=op["l1_nominal"],
         l1_max=op["l1_max"], f_sw_min=op["f_sw_min"], f_sw_max=op["f_sw_max"],
         vl_plus=op["vl_plus"], vl_minus=op["vl_minus"], i_rms=op["i_rms"],
@@ -491,73 +459,6 @@ def design(spec: dict | None = None) -> ConverterResult:
         temperature_rise=chosen.temperature_rise, saturation_margin=chosen.saturation_margin,
         binding=binding(every, chosen), coil=chosen, candidates=tuple(every),
         next_smaller=smaller[-1] if smaller else None, warnings=notes + tuple(warnings(s, op, chosen)))
-
-
-def designed_at(s: Table) -> Table:
-    """The checked table the design runs at: ``s`` itself, or with ``audible`` = "avoid" and a full-load
-    frequency that would fall into the audio band, ``s`` with f_min raised to :func:`inaudible_f_min`.
-
-    Parameters
-    ----------
-    s : Table
-        The checked ``[converter]`` table.
-
-    Returns
-    -------
-    Table
-        The checked table to design at.
-
-    Raises
-    ------
-    Infeasible
-        From :func:`inaudible_f_min`, when no f_min keeps every corner out of the audio band.
-    """
-    if s["audible"] != "avoid":
-        return s
-    f_needed = inaudible_f_min(s)
-    return s if f_needed <= s["f_min"] else checked_table(TABLE, {**dict(s), "f_min": f_needed})
-
-
-def inaudible_f_min(s: dict) -> float:
-    """The lowest f_min at which the full-load frequency stays at or above :data:`AUDIO_BAND` at every corner
-    over the supply range: every frequency scales with f_min (L1 is inversely proportional to it, the peak
-    currents do not depend on it), so f_min x AUDIO_BAND / f_sw_min, re-checked through the operating point
-    (R1's series rounding) and nudged up until it holds.
-
-    Parameters
-    ----------
-    s : Mapping
-        The checked ``[converter]`` table (SI units).
-
-    Returns
-    -------
-    float
-        The f_min to design at, Hz: the spec's own when it already stays out of the audio band.
-
-    Raises
-    ------
-    Infeasible
-        When ``v_supply_max`` reaches :func:`~.coil.v_top` (the frequency falls to zero there, whatever f_min),
-        or the f_min needed is above the schema's highest.
-    """
-    from ..schema import TABLES
-
-    if s["v_supply_max"] >= v_top(s):
-        raise Infeasible(TABLE, f"audible = avoid: at VCC2 = {eng(v_top(s), 'V')} V_L+ vanishes and the full-load "
-                         f"frequency falls to zero whatever f_min; keep v_supply_max below it (or audible = warn)",
-                         {"v_supply_max": v_top(s)})
-    f_high = next(p.high for p in TABLES[TABLE] if p.name == "f_min")
-    f = s["f_min"]
-    for _ in range(20):
-        low = operating_point({**dict(s), "f_min": f})["f_sw_min"]
-        if low >= AUDIO_BAND * (1 - 1e-9):
-            return f
-        f = f * AUDIO_BAND / low * (1 + 1e-6)
-        if f > f_high:
-            break
-    raise Infeasible(TABLE, f"audible = avoid: the full-load frequency stays above {eng(AUDIO_BAND, 'Hz')} up to "
-                     f"v_supply_max = {eng(s['v_supply_max'], 'V')} only with f_min above {eng(f, 'Hz')}, more than the "
-                     f"{eng(f_high, 'Hz')} allowed: lower v_supply_max or use audible = warn", {"f_min": f})
 
 
 def sweep(s: dict, frequencies) -> list[dict]:

@@ -10,7 +10,8 @@ its corners vary.
   reads it (``thd_max``), over L, C_BYP and the oscillator's spread against eq 5;
 * converter: the current the converter delivers at ``v_supply_min`` (limit ``i_out``) and the full-load
   frequency there (limit the spec's ``f_min``) and at its lowest over the supply range (limit 20 kHz with
-  ``audible = "avoid"``), over R1, L1 (A_L) and the TCA5600's V12(H), V_CE(sat) and V_F.
+  ``audible = "avoid"``), over R1, L1 (A_L) and the TCA5600's V12(H), V_CE(sat) and V_F (each +-the spec's
+  ``device_spread``, the spread the design itself assumed).
 """
 from __future__ import annotations
 
@@ -20,10 +21,6 @@ from ...sources.an94002 import circuit as an94002
 from ...sources.lm4651 import circuit as lm4651
 from .engine import Measure, Model, Source
 from .limiter import UNIFORM
-
-#: the TCA5600's V12(H), V_CE(sat) and V_F spread, a fraction either way: an assumption (no public electrical
-#: characteristics were found; the converter's saturation_margin_min is said to cover V12(H)'s spread)
-DEVICE_SPREAD = 0.1
 
 
 def commutation(result) -> Model:
@@ -122,7 +119,8 @@ def converter(result) -> Model:
     Parameters
     ----------
     result : ConverterResult
-        A designed converter; ``r1_part``, ``l1_nominal`` and the checked spec are read.
+        A designed converter; ``r1_part``, ``l1_nominal`` and the checked spec (``device_spread``: the TCA5600's
+        V12(H), V_CE(sat) and V_F either way, a fraction) are read.
 
     Returns
     -------
@@ -134,12 +132,14 @@ def converter(result) -> Model:
     from ..converter.result import AUDIO_BAND
 
     s, r1, l1 = result.spec, result.r1_part, result.l1_nominal
-    dev = f"assumption: +-{DEVICE_SPREAD:.0%} (no public TCA5600 characteristics; TCA5600 chapter's reading note); "
+    spread = s["device_spread"]
+    dev = (f"converter.device_spread = {spread:g}, an assumption: +-{spread:.0%} (no public TCA5600 characteristics; "
+           "TCA5600 chapter's reading note); ")
     srcs = (Source("r1", "R1", r1 * (1 - s["r1_tolerance"]), r1 * (1 + s["r1_tolerance"]), r1, "R1 tolerance",
                    f"converter.r1_tolerance = {s['r1_tolerance']:g}; " + UNIFORM, unit="ohm"),
             Source("l", "L1 (A_L)", l1 * (1 - s["a_l_tolerance"]), l1 * (1 + s["a_l_tolerance"]), l1, "A_L tolerance",
                    f"converter.a_l_tolerance = {s['a_l_tolerance']:g} (gapped core, turns fixed); " + UNIFORM, unit="H"),
-            *(Source(k, part, s[key] * (1 - DEVICE_SPREAD), s[key] * (1 + DEVICE_SPREAD), s[key], part, dev + UNIFORM, unit="V")
+            *(Source(k, part, s[key] * (1 - spread), s[key] * (1 + spread), s[key], part, dev + UNIFORM, unit="V")
               for k, key, part in (("v12h", "v12h", "TCA5600 V12(H)"), ("vce", "v_ce_sat", "TCA5600 V_CE(sat)"),
                                    ("vf", "v_f", "rectifier V_F"))))
     top = s["v_out"] + s["v_regulator_drop"]
@@ -167,5 +167,5 @@ def converter(result) -> Model:
              "R1 (the BOM's metal film, <= 100 ppm/K) drifts 0.5 % over 50 K, half its 1 % tolerance: not in the "
              "analysis.",
              "V12(H), V_CE(sat) and V_F have no public figures, nor temperature coefficients (the TCA5600 chapter's "
-             f"reading note): the assumed +-{DEVICE_SPREAD:.0%} stands for spread and drift together.")
+             f"reading note): the assumed +-{spread:.0%} (device_spread) stands for spread and drift together.")
     return Model(srcs, measures, f, drift)
