@@ -4,6 +4,8 @@ Everything shown is rounded and free of addresses or timings, so nbval can compa
 """
 from __future__ import annotations
 
+import math
+
 from IPython.display import Markdown
 
 from ..core.claim import UNIT_SCALES
@@ -134,6 +136,10 @@ def achievable_text(table_name: str, key: str, value) -> str:
     return f"{label} {shown_value(value, unit)}"
 
 
+#: digits and the minus sign as superscripts, for a power of ten
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
 def shown_value(v, unit: str) -> str:
     """A design output as a person reads it: engineering value with its unit, a percentage, '—' for a value
     not designed (None), the warnings joined ('none' when there are none)."""
@@ -151,8 +157,12 @@ def shown_value(v, unit: str) -> str:
         return f"{v:.0f} rpm"
     if unit == "K" and isinstance(v, float):  # a temperature rise: to a hundredth of a kelvin, as a sensor reads it
         return "< 0.01 K" if 0 <= v < 0.005 else f"{v:.3g} K" if abs(v) < 10 else f"{v:.1f} K"
-    if unit in ("F", "ohm", "A", "W", "V", "Hz", "H", "s", "m", "T", "V/K"):
+    if unit in ("F", "ohm", "A", "W", "V", "Hz", "H", "s", "m", "T", "V/K", "N m/A"):  # 0.015 N m/A: 15 mN m/A
         return eng(v, unit.replace("ohm", "Ω"))
+    if unit == "kg m^2" and isinstance(v, float) and v > 0:  # no prefix on kg: 72e-6 kg m^2 reads 72 × 10⁻⁶ kg m²
+        r = float(f"{v:.4g}")
+        power = int(math.floor(math.log10(r) / 3) * 3) if r < 1e-3 else 0
+        return f"{r / 10.0 ** power:.4g}" + (f" × 10{str(power).translate(_SUPERSCRIPT)}" if power else "") + " kg m²"
     if isinstance(v, float):
         return f"{v:.4g}" + (f" {unit}" if unit not in ("", "1") else "")
     return str(v)

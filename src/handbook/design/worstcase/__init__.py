@@ -10,7 +10,7 @@ quantity here is monotonic in each input, so EVA bounds every sample. RSS is one
 root-sum-square of each input's largest move down (over its two ends, the others nominal), above it of each
 one's largest move up, so an input whose range is not symmetric about nominal (the class-D oscillator's
 0.8 .. 1.235) moves each side by what it really does; it stays inside EVA. What each design's quantities and
-limits are: :mod:`.limiter` and :mod:`.models`.
+limits are: :mod:`.limiter`, :mod:`.models` and :mod:`.timers` (the TDA5144's CAP-ST and CAP-TI).
 """
 from __future__ import annotations
 

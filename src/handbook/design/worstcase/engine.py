@@ -348,3 +348,39 @@ def sensitivity(model: Model, eva: dict, draws: dict) -> list[tuple[str, float, 
         _, y_half = yields(model, evaluate(model, args))
         rows.append((g, var[g] / total, m_half, y_half))
     return sorted(rows, key=lambda r: -r[1])
+
+
+def combine(*models: Model) -> Model:
+    """Several models as one: their inputs, quantities and drift sentences in the order given, each part's
+    equations fed its own inputs (one model is returned as it is).
+
+    Parameters
+    ----------
+    *models : Model
+        The parts, their inputs' names and quantities' keys unique across them.
+
+    Returns
+    -------
+    Model
+        The parts together.
+
+    Raises
+    ------
+    ValueError
+        When two parts share an input's name or a quantity's key.
+    """
+    if len(models) == 1:
+        return models[0]
+    names = [src.name for m in models for src in m.sources]
+    keys = [q.key for m in models for q in m.measures]
+    if len(set(names)) < len(names) or len(set(keys)) < len(keys):
+        raise ValueError(f"models to combine share an input or a quantity: {names}, {keys}")
+
+    def f(**args):
+        out = {}
+        for m in models:
+            out.update(m.f(**{src.name: args[src.name] for src in m.sources}))
+        return out
+
+    return Model(tuple(src for m in models for src in m.sources), tuple(q for m in models for q in m.measures), f,
+                 tuple(s for m in models for s in m.drift))

@@ -4,7 +4,8 @@ its corners vary.
 
 * commutation: CAP-CD's swing at ``rpm_min`` as a fraction of that board's window (limit 1: the swing fits
   between the low and high switching levels) and its swing at ``rpm_max`` (limit ``min_excursion``), over the
-  capacitor tolerance and the TDA5144's charge current and two levels;
+  capacitor tolerance and the TDA5144's charge current and two levels; with CAP-ST and CAP-TI chosen (motor
+  data, ``flyback_time``) their quantities too (:mod:`.timers`);
 * class_d: the oscillator (limits: the LM4651's 50 .. 225 kHz), the output filter's corner (no limit of its own:
   reported), its Q (``q_max``), the switching residue at the load (``ripple_max``) and THD+N as the analyser
   reads it (``thd_max``), over L, C_BYP and the oscillator's spread against eq 5;
@@ -15,21 +16,52 @@ its corners vary.
 """
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from ...sources.an94002 import circuit as an94002
 from ...sources.lm4651 import circuit as lm4651
-from .engine import Measure, Model, Source
+from . import timers
+from .engine import Measure, Model, Source, combine
 from .limiter import UNIFORM
 
 
 def commutation(result) -> Model:
-    """The CAP-CD model of a designed timing set.
+    """The model of a designed timing set: CAP-CD's, and CAP-ST's and CAP-TI's where the design chose them.
 
     Parameters
     ----------
     result : CommutationResult
-        A designed timing set; ``cap_cd`` and the checked spec are read.
+        A designed timing set; ``cap_cd``, ``cap_st`` and ``cap_ti`` (None, or absent: not chosen) and the
+        checked spec are read.
+
+    Returns
+    -------
+    Model
+        Inputs ``cap``, ``i_ch``, ``v_low``, ``v_high``; quantities ``swing_rpm_min`` (V, no limit),
+        ``window_fill`` (the swing at rpm_min over the window, limit 1) and ``swing_rpm_max`` (V, limit
+        ``min_excursion``); then :func:`.timers.start`'s and :func:`.timers.watchdog`'s inputs and quantities
+        for a chosen CAP-ST and CAP-TI.
+    """
+    s, c_st, c_ti = result.spec, getattr(result, "cap_st", None), getattr(result, "cap_ti", None)
+    parts = [cap_cd(result.cap_cd, s)]
+    parts += [] if c_st is None else [timers.start(c_st, s)]
+    parts += [] if c_ti is None else [timers.watchdog(c_ti, s)]
+    m = combine(*parts)
+    pins = timers.pin_drift(s, c_st is not None, c_ti is not None)
+    return dataclasses.replace(m, drift=m.drift + (pins,)) if pins else m
+
+
+def cap_cd(c: float, s: dict) -> Model:
+    """The CAP-CD model of a designed timing set.
+
+    Parameters
+    ----------
+    c : float
+        The chosen CAP-CD, F.
+    s : dict
+        The checked ``[commutation]`` table.
 
     Returns
     -------
@@ -38,7 +70,6 @@ def commutation(result) -> Model:
         ``window_fill`` (the swing at rpm_min over the window, limit 1) and ``swing_rpm_max`` (V, limit
         ``min_excursion``).
     """
-    s, c = result.spec, result.cap_cd
     t_slow, t_fast = an94002.t_com(s["rpm_min"], s["pole_pairs"]), an94002.t_com(s["rpm_max"], s["pole_pairs"])
     table = "TDA5144 datasheet (June 1994), CAP-CD table: min and max only; " + UNIFORM
     srcs = (Source("cap", "CAP-CD", c * (1 - s["tolerance"]), c * (1 + s["tolerance"]), c, "capacitor tolerance",
@@ -58,10 +89,7 @@ def commutation(result) -> Model:
                 Measure("window_fill", "CAP-CD swing at rpm_min, fraction of the board's window", "1", None, 1.0,
                         "window"),
                 Measure("swing_rpm_max", "CAP-CD swing at rpm_max", "V", s["min_excursion"], None, "min_excursion"))
-    tech, tc = ("C0G/NP0, 0 +- 30 ppm/K", 30e-6) if c <= 100e-9 else ("polypropylene film, -200 ppm/K", 200e-6)
-    drift = (f"CAP-CD ({c * 1e9:.3g} nF) is {tech} (the BOM's timing-capacitor class): {tc * 100:.1%} per 100 K, "
-             f"beside tolerance = {s['tolerance']:.0%}; the spec gives no temperature span for the timers, so it is "
-             "not in the analysis.",
+    drift = (timers.capacitor_drift("CAP-CD", c, s),
              "The TDA5144's charge current and levels are the datasheet's min and max (June 1994); the project "
              "holds no figure for their temperature drift beyond them.")
     return Model(srcs, measures, f, drift)

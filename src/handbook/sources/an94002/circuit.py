@@ -16,25 +16,26 @@ def oscillation_frequency(torque_constant, current, pole_pairs, inertia):
 
     Parameters
     ----------
-    torque_constant : float
+    torque_constant : float or numpy.ndarray
         Motor torque constant K_t, N m/A.
-    current : float
+    current : float or numpy.ndarray
         Start current I through the windings, A.
     pole_pairs : int
         Magnetic pole pairs p.
-    inertia : float
+    inertia : float or numpy.ndarray
         Rotor and load inertia J, kg m^2.
 
     Returns
     -------
-    float
-        The rotor's oscillation frequency about a detent, Hz.
+    float or numpy.ndarray
+        The rotor's oscillation frequency about a detent, Hz (elementwise for arrays, which broadcast).
     """
     validate.positive("torque_constant", torque_constant, "N m/A")
     validate.positive("start_current", current, "A")
     validate.pole_pairs("pole_pairs", pole_pairs)
     validate.positive("inertia", inertia, "kg m^2")
-    return math.sqrt(torque_constant * current * pole_pairs / inertia) / (2 * math.pi)
+    x = torque_constant * current * pole_pairs / inertia
+    return (np.sqrt(x) if isinstance(x, np.ndarray) else math.sqrt(x)) / (2 * math.pi)
 
 
 def start_period(cap, i_cap=2e-6, v_low=0.05, v_high=2.2):
@@ -42,17 +43,17 @@ def start_period(cap, i_cap=2e-6, v_low=0.05, v_high=2.2):
 
     Parameters
     ----------
-    cap : float
+    cap : float or numpy.ndarray
         CAP-ST, F.
-    i_cap : float
+    i_cap : float or numpy.ndarray
         Charge (= discharge) current of CAP-ST, A.
     v_low, v_high : float
         The lower and upper switching levels of CAP-ST, V.
 
     Returns
     -------
-    float
-        The start oscillator's period, s.
+    float or numpy.ndarray
+        The start oscillator's period, s (elementwise for arrays).
     """
     validate.ordered("v_st_low", v_low, "v_st_high", v_high)
     return 2 * cap * (v_high - v_low) / validate.positive("i_cap_st", i_cap, "A")
@@ -343,17 +344,17 @@ def watchdog_time(cap, i_wd=5e-6, v_low=0.3, v_high=2.2):
 
     Parameters
     ----------
-    cap : float
+    cap : float or numpy.ndarray
         CAP-TI, F.
-    i_wd : float
+    i_wd : float or numpy.ndarray
         Watchdog charge current, A.
     v_low, v_high : float
         Start and end of the watchdog ramp, V.
 
     Returns
     -------
-    float
-        The watchdog time, s.
+    float or numpy.ndarray
+        The watchdog time, s (elementwise for arrays).
     """
     validate.ordered("v_ti_low", v_low, "v_ti_high", v_high)
     return validate.positive("cap_ti", cap, "F") * (v_high - v_low) / validate.positive("i_wd", i_wd, "A")
@@ -798,15 +799,15 @@ def decay_rate(f_osc, damping_ratio):
 
     Parameters
     ----------
-    f_osc : float
+    f_osc : float or numpy.ndarray
         Undamped oscillation frequency about the detent (eq 2), Hz.
     damping_ratio : float
         Damping ratio zeta, a pure number > 0.
 
     Returns
     -------
-    float
-        The envelope decay rate sigma, 1/s.
+    float or numpy.ndarray
+        The envelope decay rate sigma, 1/s (elementwise for an array of frequencies).
     """
     w = 2 * math.pi * validate.positive("f_osc", f_osc, "Hz")
     z = validate.positive("damping_ratio", damping_ratio, "")
@@ -818,7 +819,7 @@ def settle_time(f_osc, damping_ratio, residual):
 
     Parameters
     ----------
-    f_osc : float
+    f_osc : float or numpy.ndarray
         Undamped oscillation frequency about the detent (eq 2), Hz.
     damping_ratio : float
         Damping ratio zeta, a pure number > 0.
@@ -827,8 +828,8 @@ def settle_time(f_osc, damping_ratio, residual):
 
     Returns
     -------
-    float
-        The settling time, s.
+    float or numpy.ndarray
+        The settling time, s (elementwise for an array of frequencies).
     """
     validate.positive("residual", residual, "")
     return math.log(1.0 / validate.fraction("residual", residual)) / decay_rate(f_osc, damping_ratio)
