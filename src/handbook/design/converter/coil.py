@@ -412,7 +412,7 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
         fails.append(f"{n} turns give less than L1 = {op['l1_nominal'] * 1e6:.3g} uH even on the ungapped core")
         limits.append("gap")
     elif gap < GAP_MIN * (1 - 1e-6):
-        fails.append(f"the gap for {n} turns is {gap * 1e6:.3g} um, below {GAP_MIN * 1e6:g} um")
+        fails.append(f"the gap for {n} turns is {gap * 1e6:.3g} µm, below {GAP_MIN * 1e6:g} µm")
         limits.append("gap")
     fitting = [w for w in table["wires"] if n * w["d_outer"] ** 2 <= s["fill_factor"] * shape["window_area"]]
     base = dict(shape=shape_name, material=material_name, ve=shape["ve"], turns=n, gap=gap, a_l=op["l1_nominal"] / n ** 2,
