@@ -266,3 +266,28 @@ def test_a_table_nothing_meets_is_shown_with_what_can_be_met(tmp_path):
     assert "<code>[current_limiter]</code> cannot be met" in design_report.body(ctx, "spec")
     assert _handbook("report", spec, "-o", tmp_path / "tight.html").returncode == 3
     assert not (tmp_path / "tight.html").exists()
+
+
+def test_section_5_shows_the_timers_cycle_and_the_limiters_stall_of_this_design(tmp_path):
+    """Section 5 of a spec with the timers and the limiter: the designed CAP-CD/CAP-DC through a commutation cycle
+    (six commutations an electrical cycle, each half-way, 30 electrical degrees, after its zero crossing: AN94002
+    2.1.2) and the designed limiter holding a stalled motor (settled at the trip current of its nominal parts, i.e.
+    V_cs / R7 by eq 13, between the spec's two limits)."""
+    from handbook.design import spec as specmod
+    from handbook.report import design_report
+    from handbook.spice import runner
+
+    if runner.available() is None:
+        pytest.skip(runner.why_unavailable())
+    spec = specmod.parse({"commutation": {}, "current_limiter": {}})
+    ctx = design_report.context(spec, specmod.run_each(spec), "two.toml")
+    html = design_report.body(ctx, "spice")
+    cycle = re.search(r"levels: ([\d.]+) commutations a cycle, each ([\d.]+)° after", html)
+    assert cycle and float(cycle.group(1)) == pytest.approx(6, abs=0.05)
+    assert float(cycle.group(2)) == pytest.approx(30, abs=1.0)
+    lim = ctx.designed["current_limiter"]
+    stall = re.search(r"peaks at ([\d.]+) (m?)A .* settles within 5 % in ([\d.]+) (m?)s", html)
+    assert stall, "the stall's caption"
+    peak = float(stall.group(1)) * (1e-3 if stall.group(2) else 1)
+    assert lim.i_trip_nominal < peak < lim.spec["i_must_trip"]
+    assert 'id="sim-limiter-step' in html or "sim-limiter-step" in html

@@ -1,7 +1,8 @@
 """The design report's SPICE section (section 5): each design confirmed by ngspice at its worst corners
 (:func:`handbook.spice.checks.confirm_rows`), and where a run is cheap the waveform or response of this very
 circuit: the class-D filter's response with the spec's load (one AC run), the converter's coil current with the
-designed L1 and R1 (one transient), the limiter's output as the motor current ramps through the trip (one
+designed L1 and R1 (one transient), the limiter's output as the motor current ramps through the trip and the motor
+current when a running motor stalls (two transients), CAP-CD and CAP-DC through a commutation cycle (one
 transient). Skipped with the reason when ngspice is missing."""
 from __future__ import annotations
 
@@ -84,8 +85,53 @@ def _limiter(result) -> str:
                       "nominal parts (ngspice transient); the band is the design's trip over every corner.")
 
 
-#: table -> the cheap waveform of its circuit
-WAVES = {"class_d": _class_d, "converter": _converter, "current_limiter": _limiter}
+def _limiter_step(result) -> str:
+    from ...spice.limiter import transient
+
+    s = result.spec
+    p = {"r7": result.r7, **dict(zip(("r9", "r10", "r11", "r12", "r13"), result.network)),
+         "zener_voltage": s["zener_voltage"], "v_supply": s["v_supply_min"]}
+    if result.r14 is not None:
+        p["r14"] = result.r14
+    w = transient.stall(p)
+    fig, ax = _axes("time after the stall", "motor current", "s", "A")
+    t = w["t"] - transient.defaults()["t_step"]
+    ax.plot(t, w["i"], label="motor current")
+    ax.axhline(w["limit"], color="0.4", ls=":", label=f"trip, nominal parts: {eng(w['limit'], 'A')}")
+    for x, lab in ((s["i_no_trip"], "i_no_trip"), (s["i_must_trip"], "i_must_trip")):
+        ax.axhline(x, color="#c0392b", ls="--", lw=1)
+        ax.annotate(lab, (t[-1], x), fontsize=7, xytext=(-2, -9), textcoords="offset points", ha="right")
+    ax.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)
+    settle = "does not settle within the run" if w["settling"] is None else f"settles within 5 % in {eng(w['settling'], 's')}"
+    return figure_svg(fig, "sim-limiter-step", "A running motor that stalls (its back-EMF falls to zero in 1 µs) at the "
+                      f"lowest supply, nominal parts, the limiter closed through the speed loop as AN94002's chapter "
+                      f"reads figure 3: the current peaks at {eng(w['peak'], 'A')} ({w['overshoot_rel'] * 100:+.0f} % over the "
+                      f"trip) and {settle} (ngspice transient; the closure, T2 and the windings as the book assumes).")
+
+
+def _commutation(result) -> str:
+    from ...spice import commutation_cycle
+
+    s = result.spec
+    c = commutation_cycle.cycle({"cap_cd": result.cap_cd, "cap_dc": result.cap_dc, "pole_pairs": s["pole_pairs"],
+                                 "rpm": s["rpm_min"]})
+    fig, ax = _axes("time", "timer voltage", "s", "V")
+    ax.plot(c["t"], c["cd"], label="CAP-CD")
+    ax.plot(c["t"], c["dc"], label="CAP-DC")
+    for k, z in enumerate(c["zc"]):
+        ax.axvline(z, color="0.6", ls=":", lw=0.8, label="back-EMF zero crossing" if k == 0 else None)
+    ax.plot(c["commutations"], [c["q"]["v_low"]] * len(c["commutations"]), "kv", ms=5, label="commutation")
+    ax.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=4, frameon=False)
+    f = commutation_cycle.figures(c)
+    return figure_svg(fig, "sim-commutation", f"The designed CAP-CD and CAP-DC driven through {c['q']['cycles']} electrical "
+                      f"cycles by a motor's back-EMF at rpm_min ({s['rpm_min']:g} rpm, {s['pole_pairs']} pole pairs), the "
+                      f"TDA5144's typical currents and levels: {f['per_cycle']:.3g} commutations a cycle, each "
+                      f"{f['delay_deg']:.3g}° after its zero crossing (ngspice transient).")
+
+
+#: table -> the waveforms and responses of its circuit
+WAVES = {"commutation": (_commutation,), "class_d": (_class_d,), "converter": (_converter,),
+         "current_limiter": (_limiter, _limiter_step)}
 
 
 def section(ctx) -> str:
@@ -111,8 +157,7 @@ def section(ctx) -> str:
             else:
                 out.append(note("no corner confirmation for this circuit (SPICE checks its equations in the book); "
                                 "its waveform below is simulated with the designed parts"))
-            if t in WAVES:
-                out.append(WAVES[t](result))
+            out += [wave(result) for wave in WAVES.get(t, ())]
         except (checks.SpiceError, checks.SpiceUnavailable) as exc:
             out.append(note(f"SPICE run failed: {exc}"))
             ctx.spice_warnings.append((t, f"SPICE run failed, the design is not confirmed by simulation: {exc}"))
