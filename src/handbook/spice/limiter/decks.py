@@ -397,7 +397,8 @@ def opamp_corner(p: dict | None = None) -> Circuit:
         bb = numerics.ramp_row(b["response"], b["t_cross"], h, SOLVER, rate=p["i_max"] / RAMP, v_rate=b["slope"],
                                value=eq_i, v_node=p["v_supply"], a=a, reads_nodes=False)
         why_back = (f"eq 11 with the bias solved for 2 V of headroom; expected {back_exp:+.3%}: D1's 15 Ω at its current "
-                    f"there ({b['dvz'] * 1e3:+.1f} mV) lifts the headroom, so 2 V comes {b['zener']:+.3%} early; the "
+                    f"there ({b['dvz'] * 1e3:+.1f} mV) moves V+'s headroom, and the current that brings it to 2 V, by "
+                    f"{b['zener']:+.3%}; the "
                     f"model's change-over (it blends its inputs in over the last 1 mV below the limit: its drive turns "
                     f"positive {b['early'] * 1e3:.3f} mV of headroom before 2 V) {b['change_over']:+.3%}; the output's "
                     f"rise from its low clamp to mid-swing ({b['tau'] * 1e3:.3g} ms, its drive quadratic in time while "
