@@ -42,7 +42,8 @@ def rows_table(rows: list[dict], equation_head: str = "equation", lead: dict | N
                   "tolerance", "verdict"],
                  [[*name(r), r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
                    f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"{r.get('expected_difference', 0):+.2%}",
-                   _tolerance(r["rtol"]), r["verdict"] if r["agrees"] else "**differs**"] for r in rows])
+                   _tolerance(r["rtol"]), r["verdict"] if r["agrees"] else
+                   "**differs**" + (f"; {r['caveat']}" if r.get("caveat") else "")] for r in rows])
     # one line per reason: rows that share a tolerance and its reason (a filter's corner, Q and gain; the same check
     # at three temperatures) are named together instead of repeating the paragraph for each
     groups: dict[tuple, list[str]] = {}
@@ -82,8 +83,10 @@ def faults_list(rows: list[dict]):
 
 
 def _tolerance(rtol: float) -> str:
-    """±0.5 %, ±0.05 %, ±0.01 %: enough figures to show a tight tolerance as it is."""
-    return f"±{rtol * 100:.2g} %"
+    """±0.5 %, ±0.05 %, ±0.00051 %: enough figures to show a tight tolerance as it is, never in exponent form."""
+    import numpy as np
+
+    return f"±{np.format_float_positional(rtol * 100, precision=2, unique=False, fractional=False, trim='-')} %"
 
 
 def confirm_table(table: str, result):

@@ -37,10 +37,10 @@ KINDS = {"independent": "agrees", "sanity": "consistent (by construction)"}
 
 def verdict(row: dict) -> str:
     """What the book says of one row: "agrees" only for an independent check; a sanity check that holds is
-    "consistent (by construction)"; either outside its tolerance "differs"."""
-    if not row["agrees"]:
-        return "differs"
-    return KINDS[row.get("kind", "independent")]
+    "consistent (by construction)"; either outside its tolerance "differs"; a row's caveat (:class:`Check`) follows,
+    after a semicolon."""
+    said = KINDS[row.get("kind", "independent")] if row["agrees"] else "differs"
+    return f"{said}; {row['caveat']}" if row.get("caveat") else said
 
 
 @dataclass(frozen=True)
@@ -56,6 +56,9 @@ class Check:
     #: the difference physics predicts, (SPICE - equation) / equation, from what ``why`` names the equation
     #: leaving out (computed, never fitted); ``rtol`` is then the numerical method's alone, about it
     expected: float = 0.0
+    #: (the run's `.meas` results) -> "" or a sentence the verdict adds: a condition of the operating point the
+    #: simulation shows and the equation assumes (an op-amp input outside its common-mode range), said in the row
+    caveat: Callable[[dict], str] | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
         if self.kind not in KINDS:
@@ -123,7 +126,7 @@ def measured(circuit: Circuit, run=None) -> dict:
 def evaluate(circuit: Circuit, run=None, values: dict | None = None) -> list[dict]:
     """Run the netlist once (or take ``values``, its `.meas` results) and compare every check: rows (id,
     circuit, quantity, unit, equation, spice, rel_diff, expected_difference, residual, agrees, rtol, why, kind,
-    verdict)."""
+    verdict, and caveat where the check's caveat says one)."""
     got = values if values is not None else measured(circuit, run)
     rows = []
     for c in circuit.checks:
@@ -131,5 +134,7 @@ def evaluate(circuit: Circuit, run=None, values: dict | None = None) -> list[dic
         rows.append({"id": c.id, "circuit": circuit.id, "quantity": c.quantity, "unit": c.unit,
                      "equation": equation, "spice": value, **judge(c, equation, value),
                      "rtol": c.rtol, "why": c.why, "kind": c.kind})
+        if c.caveat is not None and (note := c.caveat(got)):
+            rows[-1]["caveat"] = note
         rows[-1]["verdict"] = verdict(rows[-1])
     return rows

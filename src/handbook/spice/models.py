@@ -21,7 +21,7 @@ BZX79_C8V2_RZ = 15.0  # ohm: dynamic resistance, datasheet maximum "below 15 ohm
 
 
 def bzx79_c8v2(name: str = "BZX79C8V2", v_z: float = BZX79_C8V2_VZ[1], r_z: float = BZX79_C8V2_RZ,
-               tc: float = 0.0) -> list[str]:
+               tc: float = 0.0, digits: int = 6) -> list[str]:
     """`.model` of a BZX79-C8V2 whose breakdown is ``v_z`` at the 5 mA test current.
 
     ngspice's diode conducts IBV at V = BV in breakdown, plus I RS: with IBV = 5 mA the voltage at 5 mA is
@@ -31,14 +31,14 @@ def bzx79_c8v2(name: str = "BZX79C8V2", v_z: float = BZX79_C8V2_VZ[1], r_z: floa
     (:data:`BZX79_C8V2_VZ`) or any tolerance corner. The temperature coefficient (+0.03 to +0.08 %/K,
     BZX79 datasheet) is modelled only when ``tc`` (V/K) is given: then BV moves by ``tc`` per kelvin from 25 C
     (ngspice's TCV, in V/K with the opposite sign: BV(T) = BV - TCV (T - TNOM)); by default the circuits fold the
-    drift into ``v_z``.
+    drift into ``v_z``. ``digits``: significant digits of BV and RS in the model line.
     """
     rs = r_z - K_Q * T25 / BZX79_C8V2_IZT
     if rs <= 0 or v_z <= 0:
         raise ValueError(f"zener model: r_z = {r_z:g} ohm must exceed {K_Q * T25 / BZX79_C8V2_IZT:.3g} ohm, v_z > 0")
     bv = v_z - BZX79_C8V2_IZT * rs
     return [f"* BZX79-C8V2: V_Z = {v_z:.6g} V at 5 mA, r_z = {r_z:g} ohm (BZX79 datasheet: 7.7..8.7 V, < 15 ohm)",
-            f".model {name} D(BV={bv:.6g} IBV={BZX79_C8V2_IZT:g} RS={rs:.6g} IS=1e-14 TNOM=25"
+            f".model {name} D(BV={bv:.{digits}g} IBV={BZX79_C8V2_IZT:g} RS={rs:.{digits}g} IS=1e-14 TNOM=25"
             + (f" TCV={-tc:.6g})" if tc else ")")]
 
 
