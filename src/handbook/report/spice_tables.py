@@ -82,8 +82,10 @@ def faults_list(rows: list[dict]):
 
 
 def _tolerance(rtol: float) -> str:
-    """±0.5 %, ±0.05 %, ±0.01 %: enough figures to show a tight tolerance as it is."""
-    return f"±{rtol * 100:.2g} %"
+    """±0.5 %, ±0.05 %, ±0.00052 %: enough figures to show a tight tolerance as it is, never an exponent."""
+    from ..spice.bounds import percent
+
+    return percent(rtol) if rtol > 0 else f"±{rtol * 100:g} %"
 
 
 def confirm_table(table: str, result):
