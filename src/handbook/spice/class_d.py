@@ -130,7 +130,7 @@ def circuit(p: dict | None = None) -> Circuit:
     corner_tol = round_up(crossing(k) + PRINTED_6)
     peak = k * k * Q_MAX ** 2 / 2  # the chord's error where |H| peaks, at the largest Q of the operating points
     q_tol = round_up(peak + PRINTED_7)
-    grid = (f"the AC grid, {AC_CHECK_PER_DECADE} points a decade (k = {k:.3%} apart), read by linear interpolation "
+    grid = (f"the AC grid, {AC_CHECK_PER_DECADE} points a decade (k = {k * 100:.3f} % apart), read by linear interpolation "
             "in f")
     checks = (
         Check(f"{cid}-corner", f"corner (phase -90 deg), R_L = {p['r_load']:g} ohm", "Hz", eqs.filter_f0(*args[:2]),

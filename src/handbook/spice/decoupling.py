@@ -65,7 +65,7 @@ def circuit(p: dict | None = None) -> Circuit:
             ".meas ac f_res WHEN vp(z)=0 CROSS=1")
     f_res = 1 / (2 * math.pi * math.sqrt(esl * c2))
     k = log_step(AC_CHECK_PER_DECADE)
-    grid = (f"ngspice interpolates linearly in f between sweep points k = {k:.3%} apart ({AC_CHECK_PER_DECADE} a "
+    grid = (f"ngspice interpolates linearly in f between sweep points k = {k * 100:.3f} % apart ({AC_CHECK_PER_DECADE} a "
             "decade)")
     # f^2 |Z''| / |Z| of a series R-L-C is at most 2 (its capacitive asymptote, 1/f) plus 4 Q^2 (its resonance)
     z_tol = round_up(chord(k, 2 + 4 * Q_MAX ** 2) + PRINTED_7)
