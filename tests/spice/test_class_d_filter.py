@@ -60,6 +60,27 @@ def test_every_check_agrees_within_its_tolerance(ngspice, build):
         assert row["agrees"], f"{row['id']}: equation {row['equation']:.6g}, SPICE {row['spice']:.6g}, {row['why']}"
 
 
+def test_the_largest_q_the_referee_draws_agrees_within_the_grids_bound(ngspice):
+    """The sharpest peak of the operating points (8 ohm across 10 uF, 2 x 22 uH: Q 3.81), where |H|'s curvature
+    bounds the AC grid's interpolation: the Q row's tolerance is that bound (k^2 Q^2 / 2 and the printed digits)."""
+    rows = {r["id"]: r for r in evaluate(class_d.circuit({"l_out": 22e-6, "c_out": 10e-6, "r_load": 8.0}))}
+    q = rows["lm4651-filter-8ohm-q"]
+    assert q["agrees"] and q["equation"] == pytest.approx(class_d.Q_MAX)
+    k = 10 ** (1 / class_d.AC_CHECK_PER_DECADE) - 1
+    assert q["rtol"] == pytest.approx(k * k * class_d.Q_MAX ** 2 / 2 + 5e-7, rel=0.1)
+
+
+def test_the_residue_is_read_about_its_mean(ngspice):
+    """ngspice's first-order step after each corner of the edges builds a DC at the load (it read +0.09 % in the
+    raw rms with a hundredth of the period as the step); the deck reads the rms about the mean, as the Fourier sum."""
+    from handbook.spice.runner import run
+
+    c = class_d.ripple({"l_out": 100e-6, "c_out": 10e-6, "r_load": 8.0, "f_sw": 200e3, "supply": 25.0})
+    out = run(c.netlist)
+    assert out["ripple"] == pytest.approx((out["ripple_rms"] ** 2 - out["ripple_avg"] ** 2) ** 0.5, rel=1e-5)
+    assert evaluate(c)[0]["agrees"]
+
+
 def test_the_filter_model_has_two_checks_or_more_per_load(ngspice):
     assert len(class_d.circuit().checks) + len(class_d.ripple().checks) >= 2
 

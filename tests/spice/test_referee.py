@@ -27,6 +27,49 @@ def test_every_check_holds_at_twenty_operating_points(ngspice, build):
     assert not bad, bad[:3]
 
 
+#: the builders outside the limiter decks (src/handbook/spice/limiter)
+NON_LIMITER = [b for b in referee.SPACES if ".limiter" not in b.__module__]
+
+
+@pytest.mark.parametrize("build", NON_LIMITER, ids=_name)
+def test_every_check_holds_at_the_two_extreme_corners_of_its_space(ngspice, build):
+    """Beside the twenty drawn points, the space's two extreme corners: every parameter at its low end, then every
+    one at its high end (the largest coils and capacitor at the highest switching frequency are where a step that
+    misses the edges showed; about 6 s for every circuit)."""
+    bad = []
+    for end in (0, 1):
+        p = {k: v[end] for k, v in referee.SPACES[build].items()}
+        bad += [(r["id"], f"residual {r['residual']:+.4%} against ±{r['rtol']:.4%}", p)
+                for r in evaluate(build(p)) if not r["agrees"]]
+    assert not bad, bad[:3]
+
+
+def test_the_spaces_hold_their_stated_reasons():
+    """Each narrowed space keeps the chapter's assumption it states: CAP-CD's swing at the lowest speed with the
+    largest current fits the narrowest window at the smallest capacitor drawn (eq 6), the speed loop's OTA sinks less
+    than its 40 mA at the top of the control range at every corner, and the AC rows' bounds take the largest Q of
+    their spaces."""
+    import itertools
+
+    from handbook.sources import an94002
+    from handbook.spice import class_d, decoupling, speed, timers
+
+    cd = referee.SPACES[timers.commutation_delay]
+    swing = an94002.excursion(cd["cap_cd"][0], cd["rpm_min"][0], an94002.params()["pole_pairs"], cd["i_ch"][1])
+    assert swing <= (timers.CD_HIGH[0] - timers.CD_LOW[2]) * (1 + 1e-12)
+    sp = referee.SPACES[speed.circuit]
+    for corner in itertools.product(*sp.values()):
+        q = speed.with_defaults(speed.defaults(), dict(zip(sp, corner)))
+        top = an94002.v_mot_max(q["v_supply"], q["supply_tolerance"], q["v_drop_min"])
+        assert speed.i_sink(top, q) < q["i_sink"], corner
+    f = referee.SPACES[class_d.circuit]
+    q_max = max(r * math.sqrt(c / (2 * lo)) for lo, c, r in itertools.product(f["l_out"], f["c_out"], f["r_load"]))
+    assert class_d.Q_MAX == pytest.approx(q_max)
+    d = referee.SPACES[decoupling.circuit]
+    assert decoupling.Q_MAX == pytest.approx(max(math.sqrt(lo / c) / r for lo, c, r in itertools.product(
+        d["esl"], d["c2"], d["esr"])))
+
+
 def test_the_points_cover_their_ranges():
     """Twenty seeded points reach both ends of every range, each within a twentieth of it (not twenty copies of
     one corner)."""

@@ -83,10 +83,10 @@ def faults_list(rows: list[dict]):
 
 
 def _tolerance(rtol: float) -> str:
-    """±0.5 %, ±0.05 %, ±0.00051 %: enough figures to show a tight tolerance as it is, never in exponent form."""
-    import numpy as np
+    """±0.5 %, ±0.05 %, ±0.00052 %: enough figures to show a tight tolerance as it is, never an exponent."""
+    from ..spice.bounds import percent
 
-    return f"±{np.format_float_positional(rtol * 100, precision=2, unique=False, fractional=False, trim='-')} %"
+    return percent(rtol) if rtol > 0 else f"±{rtol * 100:g} %"
 
 
 def confirm_table(table: str, result):

@@ -191,8 +191,12 @@ def bd434_dc(i_c: float, v_ec: float, **figures) -> tuple[float, float]:
         lo, hi = 0.0, 1.5
         for _ in range(200):
             mid = (lo + hi) / 2
+            if mid in (lo, hi):  # the interval is down to adjacent doubles: more rounds change nothing
+                break
             lo, hi = (mid, hi) if currents(mid, v_ec_i)[0] < i_c else (lo, mid)
         v_eb_i = (lo + hi) / 2
         i_b = currents(v_eb_i, v_ec_i)[1]
-        v_ec_i = v_ec - (i_c + i_b) * m["re"] - i_c * m["rc"]
+        v_ec_i, last = v_ec - (i_c + i_b) * m["re"] - i_c * m["rc"], v_ec_i
+        if v_ec_i == last:  # the fixed point, to the last bit
+            break
     return i_c / i_b, v_eb_i + i_b * m["rb"] + (i_c + i_b) * m["re"]

@@ -258,18 +258,27 @@ SPACES: dict[Callable, dict] = {
     },
     # the start oscillator's rule (2 s per uF) is the datasheet's for its typical current and levels: CAP-ST only
     timers.start_oscillator: {"cap_st": (100e-9, 470e-9)},
-    timers.commutation_delay: {"cap_cd": (10e-9, 33e-9), "rpm_min": (1000.0, 2500.0), "rpm_max": (3600.0, 9000.0),
-                               "i_ch": (6e-6, 11e-6), "i_dis": (12e-6, 22e-6)},
+    # CAP-CD no smaller than the chapter's eq 6 asks for the slowest speed (1000 rpm) and the largest charge current
+    # (11 uA) drawn here, in the datasheet's narrowest window (2.3 V - 0.9 V): 13 nF. A smaller one clips at V_high
+    # at the lowest speed, a design the chapter never draws, and the sanity rows would read the clip, not the timer
+    timers.commutation_delay: {
+        "cap_cd": (an94002.cap_cd_min(1000.0, an94002.params()["pole_pairs"], 11e-6, timers.CD_HIGH[0] - timers.CD_LOW[2]),
+                   33e-9),
+        "rpm_min": (1000.0, 2500.0), "rpm_max": (3600.0, 9000.0), "i_ch": (6e-6, 11e-6), "i_dis": (12e-6, 22e-6)},
     timers.watchdog: {"cap_ti": (2.2e-9, 22e-9), "i_wd": (4e-6, 6e-6), "i_ti_fast": (45e-6, 70e-6),
                       "i_ti_discharge": (20e-6, 35e-6)},
-    speed.circuit: {"v_supply": (11.0, 13.0), "r_motor": (5.0, 20.0), "gm": (0.2, 0.4), "r2": (470.0, 1000.0),
+    # the chapter's loop is linear up to the top of the control range: the OTA sinks T1's base current below its
+    # 40 mA. With the assumed BD434 (h_FE about 50 at 2 A) that holds up to about 1.95 A of motor current at the top
+    # (10.7 V at 13 V - 10 %): motors from 6 ohm (1.8 A there) to 20 ohm, the chapter's 10 ohm (about 1 A) inside.
+    # Below about 5.5 ohm at 13 V the loop cannot reach the top, and speed.circuit's rows say so and differ.
+    speed.circuit: {"v_supply": (11.0, 13.0), "r_motor": (6.0, 20.0), "gm": (0.2, 0.4), "r2": (470.0, 1000.0),
                     "r3": (33e3, 47e3)},
-    speed.loop_filter: {"r1": (10.0, 47.0), "c8": (100e-9, 470e-9), "r_motor": (5.0, 20.0), "gm": (0.2, 0.4)},
-    decoupling.circuit: {"c2": (4.7e-6, 22e-6), "esr": (0.1, 2.0), "esl": (5e-9, 20e-9), "z_max": (1.0, 4.0),
-                         "f_decoupling": (1e6, 4e6)},
-    class_d.circuit: {"l_out": (22e-6, 100e-6), "c_out": (1e-6, 10e-6), "r_load": (4.0, 8.0)},
-    class_d.ripple: {"l_out": (22e-6, 100e-6), "c_out": (1e-6, 10e-6), "r_load": (4.0, 8.0),
-                     "f_sw": (100e3, 200e3), "supply": (15.0, 25.0)},
+    speed.loop_filter: {"r1": (10.0, 47.0), "c8": (100e-9, 470e-9), "r_motor": (6.0, 20.0), "gm": (0.2, 0.4)},
+    # the ranges live beside the circuits, whose AC tolerances are bounded at their largest Q (decoupling.Q_MAX,
+    # class_d.Q_MAX)
+    decoupling.circuit: dict(decoupling.SPACE),
+    class_d.circuit: dict(class_d.FILTER_SPACE),
+    class_d.ripple: {**class_d.FILTER_SPACE, "f_sw": (100e3, 200e3), "supply": (15.0, 25.0)},
     converter.circuit: {"v12h": (0.2, 0.8), "vce_sat": (0.2, 0.8), "v_f": (0.5, 1.0), "v_cc2_min": (6.0, 10.0),
                         "v_out2": (10.0, 15.0)},
 }

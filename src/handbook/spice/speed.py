@@ -36,6 +36,7 @@ import math
 
 from ..sources import an94002 as note
 from . import models, schematic
+from .bounds import PRINTED_6, PRINTED_7, as_printed, percent, round_up
 from .circuit import Check, Circuit, Part, rebuildable, with_defaults
 from .runner import run
 from .timers import BOARD, element_lines, label
@@ -43,9 +44,13 @@ from .timers import BOARD, element_lines, label
 #: OTA figures: transfer gain, largest sink current, output saturation typ and max (TDA5144 datasheet)
 OTA_GM, OTA_SINK, OTA_SAT = 0.3, 40e-3, (1.5, 2.1)
 R_MOTOR = 10.0  # ohm: the motor as a resistor (assumption: about 1 A at 10 V)
-#: the DC rows' tolerance: the sweep's 5 mV grid interpolated and ngspice's converged solution (the equations take
-#: T1 by the model's own Gummel-Poon equations, so nothing of the physics is left out)
-GRID_RTOL = 1e-4
+#: the DC sweep's step (V of V_in) and its end: 3 V, or further when the sweep must reach 1.25 times the top of the
+#: control range (vmot_sat)
+DC_STEP, DC_END = 0.005, 3.0
+#: ngspice's DC tolerances, written into the deck: a point is accepted when each node's last Newton correction is
+#: below RELTOL |v| + VNTOL (each branch current's RELTOL |i| + ABSTOL), and Newton's quadratic convergence leaves the
+#: solution that close at most; ngspice's defaults (RELTOL 1e-3, VNTOL 1 uV) would allow 0.1 %
+RELTOL, VNTOL, ABSTOL = 1e-7, 1e-9, 1e-12
 
 
 def defaults() -> dict:
@@ -73,10 +78,12 @@ def v_mot_loop(v_in: float, q: dict) -> float:
     of T1 at its operating point (fixed-point iteration; the shortfall is a few per cent)."""
     k = 1 / note.v_in_for(1.0, q["r3"], q["r4"])  # eq 10's gain, (R3 + R4) / R4
     g = 1 / q["r_motor"] + 1 / (q["r3"] + q["r4"])
-    v = k * v_in
+    v = 0.9 * k * v_in  # below eq 10's figure: T1 starts with room across it (the fixed point is the same)
     for _ in range(100):
         _, hfe, v_eb = t1_figures(v, q)
-        v = k * (v_in - v_eb / (q["gm"] * q["r2"])) / (1 + k * g / (q["gm"] * hfe))
+        v, last = k * (v_in - v_eb / (q["gm"] * q["r2"])) / (1 + k * g / (q["gm"] * hfe)), v
+        if v == last:  # the fixed point, to the last bit (about 8 rounds)
+            break
     return v
 
 
@@ -92,6 +99,14 @@ def v_in_loop(v_mot: float, q: dict) -> float:
     return note.v_in_for(v_mot, q["r3"], q["r4"]) + i_sink(v_mot, q) / q["gm"]
 
 
+def as_deck(q: dict) -> dict:
+    """The parameters as the deck writes them (6 significant digits; the supply so that its lowest value, the part
+    V_S, is a 6-digit figure): what the equations take, so that they see the deck's parts, not a rounding of them."""
+    low = 1 - q["supply_tolerance"]
+    out = {**q, **{k: as_printed(q[k]) for k in ("r3", "r4", "r2", "r1", "c8", "r_motor", "gm", "i_sink", "v_sat")}}
+    return {**out, "v_supply": as_printed(q["v_supply"] * low) / low}
+
+
 def _parts(q: dict) -> tuple[Part, ...]:
     v_s = q["v_supply"] * (1 - q["supply_tolerance"])
     return (Part("V_S", v_s, "V", "the lowest supply, 12 V - 10 %"), Part("T1", "BD434", "", "series regulator"),
@@ -105,58 +120,117 @@ NODES = {"V_S": "VS vs 0", "T1": "QT1 vmot base vs", "R3": "R3 vmot inp", "R4": 
          "R1": "R1 base n1", "C8": "C8 n1 0", "R_M": "RM vmot 0"}
 
 
-def netlist(q: dict, parts, extra: tuple = ()) -> str:
+def sweep_end(q: dict) -> float:
+    """Where the DC sweep of V_in ends: DC_END, or past 1.25 times the top of the control range (vmot_sat reads
+    there), on the DC_STEP grid."""
+    _, hi_in = note.v_in_range({**note.params(), **q})
+    return max(DC_END, DC_STEP * math.ceil(1.3 * hi_in / DC_STEP))
+
+
+def netlist(q: dict, parts, extra: tuple = (), analysis: str | None = None) -> str:
+    """The loop's deck: the DC sweep of V_in (or ``analysis``) with ngspice's tolerances set (RELTOL ...)."""
     lines = ["* speed control: T1, the OTA, R3/R4, R1/C8 (AN94002 2.2)", *models.bd434(**q["t1"]),
              *element_lines(parts, NODES), "VIN inm 0 0",
              "* the OTA: sinks g_m (AMPIN- - AMPIN+) from AMP OUT, 0 .. I_SINK, down to V_SAT",
              "BOTA base 0 I = min(max(gm*(v(inm)-v(inp)),0),i_sink)*min(max((v(base)-v_sat)/0.05,0),1)",
-             ".dc VIN 0 3 0.005", *extra]
+             f".options reltol={RELTOL:g} vntol={VNTOL:g} abstol={ABSTOL:g}",
+             analysis or f".dc VIN 0 {sweep_end(q):.6g} {DC_STEP:g}", *extra]
     return "\n".join(lines) + "\n"
+
+
+def curvature(v_in: float, q: dict) -> tuple[float, float]:
+    """(|V_mot''| at most, V_mot') of :func:`v_mot_loop` about ``v_in``: the second differences over DC_STEP centred
+    on the grid step's ends and middle, the largest kept, and the central first difference."""
+    f = [v_mot_loop(v_in + j * DC_STEP, q) for j in (-2, -1, 0, 1, 2)]
+    second = max(abs(f[j - 1] - 2 * f[j] + f[j + 1]) for j in (1, 2, 3)) / DC_STEP ** 2
+    return second, (f[3] - f[1]) / (2 * DC_STEP)
+
+
+def dc_bounds(v_in: float, q: dict) -> dict:
+    """What the method leaves in the DC rows at ``v_in``, relative, by row (module text of :func:`circuit`): the
+    sweep's linear interpolation (DC_STEP^2 / 8 of the curvature of V_mot(V_in), :func:`curvature`), the solver's
+    convergence (RELTOL, VNTOL) and the digits ngspice prints."""
+    sf = shortfall(v_in, q)
+    v, k = sf["v_mot"], 1 / note.v_in_for(1.0, q["r3"], q["r4"])
+    bend, slope = curvature(v_in, q)
+    chord = DC_STEP ** 2 / 8 * bend  # V of V_mot: the chord's largest miss over one step
+    solve = RELTOL * v + VNTOL  # V: a node's converged error at most
+    return {"v_mot": (chord + solve) / v + PRINTED_7,
+            "v_in": (chord + solve) / slope / v_in + PRINTED_6,  # V_in where V_mot crosses a level
+            "v_diff": (chord / k + RELTOL * v_in + VNTOL) / sf["v_diff"] + PRINTED_7,  # AMPIN- is the source: exact
+            "shortfall": (chord + solve) / sf["dv_mot"] + PRINTED_6,
+            "chord": chord / v, "solve": solve / v}
 
 
 @rebuildable
 def circuit(p: dict | None = None) -> Circuit:
-    """The loop at the lowest supply, V_in swept 0 to 3 V: V_mot at the two ends of the control range."""
-    q = with_defaults(defaults(), p)
+    """The loop at the lowest supply, V_in swept 0 to 3 V (further if the control range needs it): V_mot at the two
+    ends of the control range.
+
+    The DC rows' tolerances are the method's (:func:`dc_bounds`): the 5 mV sweep interpolated linearly, off by at
+    most DC_STEP^2 / 8 times V_mot's curvature in V_in (computed from :func:`v_mot_loop`, 1e-7 of V_mot or less),
+    the solver's RELTOL and VNTOL, and the 6 or 7 digits ngspice prints. Where the OTA would have to sink more than
+    its I_SINK to hold the top of the range (a heavy motor at a high supply: T1's base current I_C / h_FE), the loop
+    cannot get there: SPICE falls short, the rows say so and differ (a finding, not an error), and V_in for the
+    top reads the sweep's end, where a probe (Breach) forces the crossing the loop never makes."""
+    q = as_deck(with_defaults(defaults(), p))
     parts = _parts(q)
     lo_in, hi_in = note.v_in_range({**note.params(), **q})
     v_top = note.v_mot_max(q["v_supply"], q["supply_tolerance"], q["v_drop_min"])
-    meas = [f".meas dc vmot_top FIND v(vmot) AT={hi_in:.6g}", f".meas dc vmot_low FIND v(vmot) AT={lo_in:.6g}",
-            f".meas dc vin_top WHEN v(vmot)={v_top:.6g} RISE=1", f".meas dc vce_top FIND par('v(vs)-v(vmot)') AT={hi_in:.6g}",
-            f".meas dc vmot_sat FIND v(vmot) AT={1.25 * hi_in:.6g}",
-            f".meas dc vdiff_top FIND par('v(inm)-v(inp)') AT={hi_in:.6g}"]
+    end = sweep_end(q)
+    meas = [f".meas dc vmot_top FIND v(vmot) AT={hi_in:.9g}", f".meas dc vmot_low FIND v(vmot) AT={lo_in:.9g}",
+            f".meas dc vin_top WHEN v(reach)={v_top:.9g} RISE=1",
+            f".meas dc vce_top FIND par('v(vs)-v(vmot)') AT={hi_in:.9g}",
+            f".meas dc vmot_sat FIND v(vmot) AT={1.25 * hi_in:.9g}",
+            f".meas dc vdiff_top FIND par('v(inm)-v(inp)') AT={hi_in:.9g}"]
     top, low = shortfall(hi_in, q), shortfall(lo_in, q)
     k10 = 1 / note.v_in_for(1.0, q["r3"], q["r4"])  # eq 10: V_mot = (R3 + R4) / R4 x V_in
-    meas += [f".meas dc short_top PARAM='{k10 * hi_in:.9g}-vmot_top'",
-             f".meas dc short_low PARAM='{k10 * lo_in:.9g}-vmot_low'"]
-    grid = ("the DC sweep's 5 mV grid, interpolated linearly (V_mot is linear in V_in but for h_FE's change over one "
-            "step; seen below 0.001 %), and ngspice's converged solution: ±0.01 %")
+    meas += [f".meas dc short_top PARAM='{k10 * hi_in:.12g}-vmot_top'",
+             f".meas dc short_low PARAM='{k10 * lo_in:.12g}-vmot_low'",
+             "* a probe, not a part: V_mot, forced up over the sweep's last step, so that vin_top reads the sweep's "
+             "end where the loop never brings V_mot to the top",
+             f"Breach reach 0 V=v(vmot)+1e4*max(v(inm)-{end - DC_STEP:.9g},0)"]
+    bt, bl = dc_bounds(hi_in, q), dc_bounds(lo_in, q)
+
+    def left(b: dict, key: str, v_mot: float) -> str:
+        """The method's share, and where the OTA cannot sink what holding ``v_mot`` takes, that finding."""
+        need = i_sink(v_mot, q)
+        short = (f" Here, though, the OTA would have to sink {need * 1e3:.1f} mA to hold {v_mot:.3g} V, more than its "
+                 f"{q['i_sink'] * 1e3:g} mA (T1's base current at {t1_figures(v_mot, q)[0]:.2g} A): the loop cannot, "
+                 "SPICE falls short and the row differs, a limit of the circuit, not of the method"
+                 if need > q["i_sink"] else "")
+        return (f"Left, the method's own: the {DC_STEP * 1e3:g} mV sweep interpolated linearly (V_mot's curvature in "
+                f"V_in, from the loop's equations, misses {b['chord']:.1e} of V_mot over a step), ngspice's converged "
+                f"solution (RELTOL {RELTOL:g}, VNTOL {VNTOL:g} V: {b['solve']:.1e}) and its printed digits: "
+                f"{percent(round_up(b[key]))}.{short}")
+
     gain = ("the equation is eq 10 less the OTA's input difference I_sink / g_m times (R3 + R4) / R4 "
             f"({top['dv_mot']:.3g} V at the top, {low['dv_mot'] * 1e3:.3g} mV at the low end), with T1's h_FE and V_EB "
             "at its operating point from the model's own Gummel-Poon equations (base charge, Early effect, high "
             "injection, RB, RE, RC: models.bd434_dc), so the verdict does not rest on the assumed BD434 figures (the "
-            "tests vary them). Left: " + grid)
-    vin_why = "eq 10 plus I_sink / g_m at that operating point (the same terms as the V_mot rows). Left: " + grid
+            "tests vary them). ")
+    vin_why = ("eq 10 plus I_sink / g_m at that operating point (the same terms as the V_mot rows); if the loop never "
+               f"gets V_mot there, SPICE reads the sweep's end, {end:g} V. ")
     checks = (
         Check("speed-vmot-top", "V_mot at the top of the V_in range (lowest supply)", "V", top["v_mot"], "vmot_top",
-              GRID_RTOL, gain),
-        Check("speed-vmot-low", "V_mot at the lowest running V_in", "V", low["v_mot"], "vmot_low", GRID_RTOL, gain),
+              round_up(bt["v_mot"]), gain + left(bt, "v_mot", top["v_mot"])),
+        Check("speed-vmot-low", "V_mot at the lowest running V_in", "V", low["v_mot"], "vmot_low",
+              round_up(bl["v_mot"]), gain + left(bl, "v_mot", low["v_mot"])),
         Check("speed-vin-top", "V_in that gives the highest controllable V_mot (eq 10 plus the OTA's difference)",
-              "V", v_in_loop(v_top, q), "vin_top", GRID_RTOL, vin_why),
+              "V", v_in_loop(v_top, q), "vin_top", round_up(dc_bounds(v_in_loop(v_top, q), q)["v_in"]),
+              vin_why + left(dc_bounds(v_in_loop(v_top, q), q), "v_in", v_top)),
         Check("speed-vdiff-top", "OTA input difference at the top of the V_in range (I_sink / g_m)", "V",
-              top["v_diff"], "vdiff_top", GRID_RTOL,
+              top["v_diff"], "vdiff_top", round_up(bt["v_diff"]),
               "I_sink = V_EB / R2 + I_C / h_FE, h_FE and V_EB by the model's Gummel-Poon equations at T1's operating "
-              "point. Left: " + grid),
+              "point; AMPIN+ carries the solver's error, AMPIN- is the source. " + left(bt, "v_diff", top["v_mot"])),
         *(Check(f"speed-eq10-{tag}", f"eq 10 as printed ({eq10:.4g} V) minus SPICE's V_mot, {where}: the OTA's "
-                "shortfall", "V", sf["dv_mot"], f"short_{tag}", rtol,
-                f"eq 10 as printed takes an OTA of infinite gain; SPICE's loop falls short of it by "
-                f"{sf['dv_mot'] / eq10:.1%} of V_mot, the OTA's input difference I_sink / g_m times (R3 + R4) / R4 "
-                f"(module text). The difference itself is the equation: I_sink from the same assumed BD434 figures "
-                f"the model has, so it tests the loop analysis, not the BD434 figures. Left: the V_mot rows' ±0.01 % "
-                f"of V_mot ({GRID_RTOL * sf['v_mot'] * 1e3:.2g} mV), ±{rtol * 100:.2g} % of the shortfall")
-          for tag, where, sf, eq10, rtol in (
-              ("top", "top of the V_in range", top, k10 * hi_in, GRID_RTOL * top["v_mot"] / top["dv_mot"]),
-              ("low", "lowest running V_in", low, k10 * lo_in, GRID_RTOL * low["v_mot"] / low["dv_mot"]))))
+                "shortfall", "V", sf["dv_mot"], f"short_{tag}", round_up(b["shortfall"]),
+                f"the V_mot row above restated as the shortfall from eq 10 as printed (an OTA of infinite gain), "
+                f"{sf['dv_mot'] / eq10:.1%} of V_mot: the same residual, rescaled, and the same faults, so it adds no "
+                "verdict of its own; it shows how far eq 10 alone is off. " + left(b, "shortfall", sf["v_mot"]),
+                kind="sanity")
+          for tag, where, sf, eq10, b in (("top", "top of the V_in range", top, k10 * hi_in, bt),
+                                          ("low", "lowest running V_in", low, k10 * lo_in, bl))))
     return Circuit("speed", "Speed-control loop", "AN94002 2.2, figure 1 (wiring assumed: the figure is lost)", parts,
                    netlist(q, parts, tuple(meas)), checks, draw=lambda: draw(parts))
 
@@ -169,8 +243,7 @@ def loop_filter(p: dict | None = None) -> Circuit:
     parts = _parts(q)
     _, hi_in = note.v_in_range({**note.params(), **q})
     f_z = 1 / (2 * math.pi * q["r1"] * q["c8"])
-    body = netlist(q, parts).replace("VIN inm 0 0", f"VIN inm 0 DC {hi_in:.6g} AC 1").replace(
-        ".dc VIN 0 3 0.005", ".ac dec 200 10 10e6")
+    body = netlist(q, parts, analysis=".ac dec 200 10 10e6").replace("VIN inm 0 0", f"VIN inm 0 DC {hi_in:.6g} AC 1")
     deck = body + "\n".join([
         "* C8's voltage over AMP OUT's: a ratio of two node voltages, so measured in a .control block",
         ".control", "run", "let h = v(n1)/v(base)", "meas ac f_rc WHEN vp(h)=-0.785398163",
