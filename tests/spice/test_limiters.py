@@ -13,8 +13,9 @@ from handbook.spice import models, runner
 from handbook.spice.circuit import Part, evaluate
 from handbook.spice.limiter import confirm as limiter_design
 from handbook.spice.limiter import decks as limiters
+from handbook.spice.limiter import supply
 
-BUILDERS = (limiters.one_transistor, limiters.opamp, limiters.opamp_corner, limiters.supply_referenced)
+BUILDERS = (limiters.one_transistor, limiters.opamp, limiters.opamp_corner, supply.supply_referenced)
 
 
 
@@ -213,7 +214,7 @@ def test_the_corner_back_row_reads_no_current_where_v_plus_is_never_out_of_range
 def test_the_low_supply_copy_says_its_input_is_out_of_range(ngspice):
     """AN93008 at 10.8 V: V+ sits 1.997 V below the supply with no motor current, inside the LM358's 2 V, and the
     model's output idles low. The trip still agrees with eq 6, and the row says the rest."""
-    c, out = simulated(limiters.supply_referenced)
+    c, out = simulated(supply.supply_referenced)
     rows = {r["id"]: r for r in evaluate(c, run=lambda _: out)}
     low = rows["limiter-supply-vcs-low"]
     assert out["head_p_1"] < 2.0 and out["out0_1"] < 0.1

@@ -3,7 +3,7 @@ it with the registry's derivation (:mod:`handbook.sources.an94002.equations`, ``
 class-D filter functions).
 
 The lcapy netlists are not typed here: :func:`netlist` writes them from the same ``Circuit.parts`` and the
-same node maps the SPICE netlist is written from (``limiters.OPAMP_NODES``, ``limiters.SUPPLY_NODES``,
+same node maps the SPICE netlist is written from (``limiter.decks.OPAMP_NODES``, ``limiter.supply.SUPPLY_NODES``,
 ``speed.NODES``, ``class_d.NODES``, ``timers.CD_NODES``), each part under a symbol named by its designator.
 A part that is not a resistor, capacitor or inductor needs a stated linear stand-in, and every part needs
 one or an explicit reason to be left out: a part added to a circuit without a decision here is an error,
@@ -131,10 +131,10 @@ def compare() -> dict:
 # AN93008 figure 3: the supply-referenced limiter, eq 1 and eq 6
 
 def supply_netlist(closed: bool = True) -> str:
-    """AN93008's limiter for lcapy from :func:`limiters.supply_parts` and :data:`limiters.SUPPLY_NODES`:
+    """AN93008's limiter for lcapy from :func:`.limiter.supply.supply_parts` and :data:`.limiter.supply.SUPPLY_NODES`:
     closed (the op-amp and the motor's loop) or open (no op-amp: its inputs draw nothing; the motor an
     independent current I_M)."""
-    from .limiter import decks as limiters
+    from .limiter import supply as limiters
 
     out = _nodes(limiters.SUPPLY_NODES["U1"], 5)[4]
     stand = {"VS": lambda n: [f"VS {n[0]} {n[1]} dc {{V_s}}"]}

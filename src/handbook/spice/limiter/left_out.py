@@ -248,10 +248,8 @@ def back_terms(p: dict, v_back: float, ramp: float, v_mid: float) -> dict:
     network's own headroom): then the deck reads 0 A (its probe), and "reading" is 0. "never": the output, held low,
     would not come back before the trip (the drive peaks at 2 V of headroom): no reading ("reading" NaN; the deck's
     measurement then fails too, unless ``v_back`` is an equation's wrong figure)."""
-    m = models.LM358
-    a = an94002.factor_a(p["r12"], p["r13"])
-    slope = p["r7"] * p["i_max"] / ramp
-    r_ref = p["r9"] + p["r10"] + p["r11"]
+    m, a = models.LM358, an94002.factor_a(p["r12"], p["r13"])
+    slope, r_ref = p["r7"] * p["i_max"] / ramp, p["r9"] + p["r10"] + p["r11"]
     v_h2 = v_back
     for _ in range(4):  # D1's current at the V_cs where the headroom is 2 V, which its lift moves
         i_z, dvz = zener_current(p, v_h2)
