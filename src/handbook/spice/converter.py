@@ -28,6 +28,7 @@ import numpy as np
 from ..core.units import eng
 from ..sources import tca5600
 from . import schematic
+from .bounds import percent
 from .circuit import Check, Circuit, Part, rebuildable, with_defaults
 from .runner import run
 
@@ -35,7 +36,7 @@ EXCERPT = "TCA5600/TCF5600 excerpt"
 K_Q = 1.380649e-23 / 1.602176634e-19  # V/K: kT/q per kelvin
 T_SIM = 300.15  # K: ngspice's default temperature (27 C), where the diode's IS is set
 RESTART = 1e-3  # S1 closes again when the coil current is down to this fraction of V12(H) / R1
-STEP_RTOL = 1e-3  # the checks' tolerance about their expected difference: the step's and RON's
+
 STEPS_PER_PERIOD = 2000  # transient step: a 2000th of the expected period (0.05 % of the peak per step)
 
 
@@ -156,31 +157,43 @@ def circuit(p: dict | None = None) -> Circuit:
     ramp = "eq 2 holds R1's drop at V12(H) all through t1; it ramps from 0, so the coil sees about V12(H)/2 more"
     diode = "D1's drop falling with its current (V_F + V_T ln(2 i / I_peak), a junction)"
     restart = f"the deck's S1 closes again at {RESTART:.1%} of the peak, not at zero current"
-    step = "the step (0.05 % of the period, .meas interpolating) and S1's 1 mΩ: ±0.1 %"
+    h = 1 / e["f"] / STEPS_PER_PERIOD  # the transient's step (_tran)
+    # each quantity is read between two crossings (t1: S1's close and open; t2: open and the restart; the period:
+    # two closes), each located by .meas's interpolation within one step h wherever S1's switching falls inside it
+    # (the waveform's kink is not a breakpoint): a time within 2 h, its relative error 2 h / time; the current into
+    # C2 is the dump's charge over the period, each within 2 h at its ends
+    tol = {"t1": 2 * h / e["t1"], "t2": 2 * h / e["t2"], "f": 2 * h * e["f"]}
+    tol["i_out"] = tol["t2"] + tol["f"]
+
+    def step(key: str) -> str:
+        return (f"the step h = {eng(h, 's')} (a {STEPS_PER_PERIOD}th of the period): each of the quantity's two "
+                f"crossings located within h by .meas's interpolation: {percent(tol[key])}")
+
     checks = (
         Check("tca5600-peak", "peak coil current", "A", e["i_peak"], "i_peak", 1e-3,
               "by construction: the deck's comparator U1 is written to open S1 at V12(H) / R1, which is eq 6a; this "
               "checks the deck's switching, not the equation. SPICE's step (0.05 % of the peak) and RON are all: ±0.1 %",
               kind="sanity"),
-        Check("tca5600-t1", "charging time t1 (the circuit: L/R1 ln(V / (V - V12(H))))", "s", x["t1"], "t1", STEP_RTOL,
+        Check("tca5600-t1", "charging time t1 (the circuit: L/R1 ln(V / (V - V12(H))))", "s", x["t1"], "t1", tol["t1"],
               "by construction: the exact charge of the deck's own R-L loop (KVL on its nodes, converter.exact), not "
               "a book equation, so it checks the deck and the simulator's integration, not the notes (eq 2 is the "
-              f"next row); expected {x['t1_deck'] / x['t1'] - 1:+.2%}: {restart}; {step}",
+              f"next row); expected {x['t1_deck'] / x['t1'] - 1:+.2%}: {restart}; {step('t1')}",
               kind="sanity", expected=x["t1_deck"] / x["t1"] - 1),
-        Check("tca5600-t1-eq2", "charging time t1 by eq 2 as printed", "s", e["t1"], "t1", STEP_RTOL,
+        Check("tca5600-t1-eq2", "charging time t1 by eq 2 as printed", "s", e["t1"], "t1", tol["t1"],
               f"expected {x['t1_deck'] / x['t1_flat'] - 1:+.2%}: {ramp}: eq 2's known bias, the exact charge against "
               f"R1's drop held at V12(H), {x['t1'] / x['t1_flat'] - 1:+.2%} (to first order -V12(H) / (2 V_L-), "
-              f"{x['t1_first'] / x['t1_flat'] - 1:+.2%}), and {restart} ({x['t1_deck'] / x['t1'] - 1:+.2%}); {step}",
+              f"{x['t1_first'] / x['t1_flat'] - 1:+.2%}), and {restart} ({x['t1_deck'] / x['t1'] - 1:+.2%}); {step('t1')}",
               expected=x["t1_deck"] / x["t1_flat"] - 1),
-        Check("tca5600-t2", "dumping time t2 (eq 3)", "s", e["t2"], "t2", STEP_RTOL,
-              f"expected {x['t2_deck'] / x['t2_flat'] - 1:+.2%}: {diode}, down to the restart; {step}",
+        Check("tca5600-t2", "dumping time t2 (eq 3)", "s", e["t2"], "t2", tol["t2"],
+              f"expected {x['t2_deck'] / x['t2_flat'] - 1:+.2%}: {diode}, down to the restart; {step('t2')}",
               expected=x["t2_deck"] / x["t2_flat"] - 1),
-        Check("tca5600-f", "free-running frequency (eq 4, with eq 2's t1)", "Hz", e["f"], "f", STEP_RTOL,
-              f"expected {x['f_deck'] / x['f_flat'] - 1:+.2%}: eq 2's bias in t1, {diode} and {restart}; {step}",
+        Check("tca5600-f", "free-running frequency (eq 4, with eq 2's t1)", "Hz", e["f"], "f", tol["f"],
+              f"expected {x['f_deck'] / x['f_flat'] - 1:+.2%}: eq 2's bias in t1, {diode} and {restart}; {step('f')}",
               expected=x["f_deck"] / x["f_flat"] - 1),
         Check("tca5600-iout", "current into C2 (eq 5, the half-triangle over the period)", "A", e["i_out_max"],
-              "i_out", STEP_RTOL, f"expected {x['i_out_deck'] / x['i_out_flat'] - 1:+.2%}: the dump's charge with "
-              f"{diode}, over the deck's period (eq 2's bias in t1, the restart); {step}",
+              "i_out", tol["i_out"], f"expected {x['i_out_deck'] / x['i_out_flat'] - 1:+.2%}: the dump's charge with "
+              f"{diode}, over the deck's period (eq 2's bias in t1, the restart); {step('i_out')} (t2's and the "
+              "period's)",
               expected=x["i_out_deck"] / x["i_out_flat"] - 1))
     title = f"TCA5600 converter power stage, L1 = {eng(p['l1'], 'H')}, R1 = {p['r1']:g} ohm"
     netlist = "\n".join([f"* {title}", *element_lines(ps), *_tran(p, _meas(p)), ".end"]) + "\n"

@@ -8,7 +8,9 @@ keeps the Monte Carlo yield (:mod:`handbook.design.worstcase`: every part unifor
 at both ends of the temperature span) at ``yield_min``, judged against the window narrowed by ``min_margin``
 (what neither the corners nor the lot hold: R7's self-heating, copper, the zener's dynamic resistance) and
 ``input_headroom``. A lot's failures are a count: the yield is accepted when a 3-sigma upper bound of the failure
-rate (Wilson's, one-sided) is at most 1 - ``yield_min``, so a fresh lot meets it too.
+rate (Wilson's, one-sided) is at most 1 - ``yield_min``, so a fresh lot meets it too. The op-amp's input range
+(``input_headroom``) stays a limit at the full corners: a board whose input sits inside it at no motor current
+leaves the output undefined, a failure mode, not a margin.
 
 It is a heuristic over k, not an exact optimum: a smaller box gives a smaller or equal R7, and the bisection
 finds the smallest box whose design passes; a design of a box between two tried ones is not tried.
@@ -18,6 +20,7 @@ from __future__ import annotations
 import math
 
 from ..common import checked_table
+from . import model as net
 from .model import TABLE
 from .search import solve
 
@@ -120,7 +123,13 @@ def attempt(s: dict, k: float) -> tuple[dict, float | None]:
         found no network).
     """
     found = solve(s if k == 1.0 else shrunk(s, k))
-    return found, None if found["r7"] is None else lot_yield(found["r7"], found["network"], s)
+    if found["r7"] is None:
+        return found, None
+    # the op-amp's input range is held at the full corners: an input inside it leaves the output undefined at no
+    # motor current (the limiter may act on a motor drawing nothing), a failure no lot statistic should trade
+    if float(net.verify(found["r7"], found["network"], s)["headroom_min"]) < s["input_headroom"] * (1 - 1e-12):
+        return found, None
+    return found, lot_yield(found["r7"], found["network"], s)
 
 
 def solve_yield(s: dict) -> dict:
