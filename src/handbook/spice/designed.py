@@ -34,17 +34,34 @@ def _commutation(result):
                                      "rpm_max": s["rpm_max"], "pole_pairs": s["pole_pairs"]})
 
 
+def limiter_params(result) -> dict:
+    """The op-amp limiter decks' parameters a designed limiter sets: R7, R9 to R13, D1's voltage and R14 (when the
+    design chose it; else the decks keep the parts list's).
+
+    Parameters
+    ----------
+    result : LimiterResult
+        A designed limiter.
+
+    Returns
+    -------
+    dict
+        {"r7", "r9" .. "r13", "zener_voltage"[, "r14"]}, ohm and V.
+    """
+    p = {"r7": result.r7, **dict(zip(("r9", "r10", "r11", "r12", "r13"), result.network)),
+         "zener_voltage": result.spec["zener_voltage"]}
+    if result.r14 is not None:
+        p["r14"] = result.r14
+    return p
+
+
 def _limiter(result):
     from ..design.bom import _zener_name
     from . import limiter
     from .limiter.decks import draw_opamp
 
     s = result.spec
-    p = {"r7": result.r7, **dict(zip(("r9", "r10", "r11", "r12", "r13"), result.network)),
-         "zener_voltage": s["zener_voltage"]}
-    if result.r14 is not None:
-        p["r14"] = result.r14
-    circuit = limiter.opamp(p)
+    circuit = limiter.opamp(limiter_params(result))
     d1 = dataclasses.replace(circuit.part("D1"), value=_zener_name(s["zener_voltage"]))
     parts = tuple(d1 if q.ref == "D1" else q for q in circuit.parts)
     return dataclasses.replace(circuit, parts=parts, draw=lambda: draw_opamp(parts))

@@ -72,8 +72,7 @@ def cap_cd(c: float, s: dict) -> Model:
     """
     t_slow, t_fast = an94002.t_com(s["rpm_min"], s["pole_pairs"]), an94002.t_com(s["rpm_max"], s["pole_pairs"])
     table = "TDA5144 datasheet (June 1994), CAP-CD table: min and max only; " + UNIFORM
-    srcs = (Source("cap", "CAP-CD", c * (1 - s["tolerance"]), c * (1 + s["tolerance"]), c, "capacitor tolerance",
-                   f"commutation.tolerance = {s['tolerance']:g} (the capacitor's tolerance class); " + UNIFORM, unit="F"),
+    srcs = (timers.capacitor("cap", "CAP-CD", c, s),
             Source("i_ch", "TDA5144 CAP-CD charge current", s["i_charge_min"], s["i_charge_max"],
                    (s["i_charge_min"] + s["i_charge_max"]) / 2, "charge current", table, unit="A"),
             Source("v_low", "TDA5144 CAP-CD low level", s["v_low_min"], s["v_low_max"],

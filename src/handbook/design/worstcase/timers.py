@@ -75,7 +75,24 @@ def pin_cite(s: dict, low: str, high: str) -> str:
     return f"commutation.{low} .. {high}: {where}; {UNIFORM}"
 
 
-def _capacitor(name: str, part: str, c: float, s: dict) -> Source:
+def capacitor(name: str, part: str, c: float, s: dict) -> Source:
+    """A timing capacitor as a varying input: uniform within +- ``tolerance`` (CAP-CD, CAP-ST and CAP-TI alike).
+
+    Parameters
+    ----------
+    name : str
+        Its argument name in the model's equations ("cap", "cap_st").
+    part : str
+        The part as the report names it ("CAP-CD").
+    c : float
+        The chosen capacitance, F.
+    s : dict
+        The checked ``[commutation]`` table.
+
+    Returns
+    -------
+    Source
+    """
     lo, hi = tolerance.symmetric(c, s["tolerance"])
     return Source(name, part, lo, hi, c, "capacitor tolerance",
                   f"commutation.tolerance = {s['tolerance']:g} (the capacitor's tolerance class); " + UNIFORM, unit="F")
@@ -101,7 +118,7 @@ def start(c: float, s: dict) -> Model:
     box, rock = design.start_box(c, s), design.rocking_box(s)
     motor = (f"commutation.motor_tolerance = {s['motor_tolerance']:g} ({_PARAMS['motor_tolerance'].cite}), as "
              "the design's rocking box takes it; " + UNIFORM)
-    srcs = (_capacitor("cap_st", "CAP-ST", c, s),
+    srcs = (capacitor("cap_st", "CAP-ST", c, s),
             Source("i_st", "TDA5144 CAP-ST current", *box["i_cap"], sum(box["i_cap"]) / 2, "CAP-ST current",
                    pin_cite(s, "i_st_min", "i_st_max"), unit="A"),
             Source("k_t", "motor torque constant K_t", *rock["torque_constant"], s["torque_constant"], "motor data",
@@ -148,7 +165,7 @@ def watchdog(c: float, s: dict) -> Model:
         ``rpm_reverse``, ``reverse_over_watchdog`` (the time a rotor reversing at ``rpm_reverse`` takes for 150
         electrical degrees over the watchdog time, limit 1); its drift sentence.
     """
-    srcs = (_capacitor("cap_ti", "CAP-TI", c, s),
+    srcs = (capacitor("cap_ti", "CAP-TI", c, s),
             Source("i_wd", "TDA5144 CAP-TI watchdog current", s["i_wd_min"], s["i_wd_max"],
                    (s["i_wd_min"] + s["i_wd_max"]) / 2, "CAP-TI current", pin_cite(s, "i_wd_min", "i_wd_max"),
                    unit="A"))

@@ -86,14 +86,11 @@ def _limiter(result) -> str:
 
 
 def _limiter_step(result) -> str:
+    from ...spice import designed
     from ...spice.limiter import transient
 
     s = result.spec
-    p = {"r7": result.r7, **dict(zip(("r9", "r10", "r11", "r12", "r13"), result.network)),
-         "zener_voltage": s["zener_voltage"], "v_supply": s["v_supply_min"]}
-    if result.r14 is not None:
-        p["r14"] = result.r14
-    w = transient.stall(p)
+    w = transient.stall({**designed.limiter_params(result), "v_supply": s["v_supply_min"]})
     fig, ax = _axes("time after the stall", "motor current", "s", "A")
     t = w["t"] - transient.defaults()["t_step"]
     ax.plot(t, w["i"], label="motor current")
