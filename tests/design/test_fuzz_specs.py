@@ -62,6 +62,7 @@ SANE = {
         "f_audio": st.floats(100, 20e3), "droop_max": st.floats(0.1, 3), "q_max": st.floats(0.5, 2),
         "ripple_max": st.floats(0.1, 2), "i_sat": st.floats(2, 20), "l_tolerance": TOL, "c_tolerance": TOL,
         "l_dcr": st.floats(0, 1000), "osc_tol_slow": st.floats(0, 0.3), "osc_tol_fast": st.floats(0, 0.3),
+        "r_tolerance": st.floats(0, 0.05),
         "rds_on_25": st.floats(0.1, 0.5), "t_overmod": st.floats(0, 500e-9), "tj_margin": st.floats(0, 30),
         "dead_time_min": st.floats(10e-9, 100e-9), "r_osc_series": st.sampled_from(["E12", "E24", "E96"]),
         "r_dly_series": st.sampled_from(["E12", "E24"]), "l_series": st.sampled_from(["E6", "E12"]),
@@ -151,10 +152,12 @@ def _reverify_class_d(cd):
     s = cd.spec
     assert cd.figures["ok"]
     assert cd.f_sw == pytest.approx(1e9 / (4000 + cd.r_osc - 0.4 * cd.r_dly), rel=1e-9)  # eq 5
-    slow, fast = cd.f_sw * (1 - s["osc_tol_slow"]), cd.f_sw * (1 + s["osc_tol_fast"])
+    t = s["r_tolerance"]  # eq 5 with R_OSC and R_DLY at their ends, times the table's spread
+    slow = (1 - s["osc_tol_slow"]) * 1e9 / (4000 + cd.r_osc * (1 + t) - 0.4 * cd.r_dly * (1 - t))
+    fast = (1 + s["osc_tol_fast"]) * 1e9 / (4000 + cd.r_osc * (1 - t) - 0.4 * cd.r_dly * (1 + t))
     assert (cd.f_sw_min, cd.f_sw_max) == pytest.approx((slow, fast), rel=1e-9)
     assert 50e3 * (1 - 1e-9) <= slow and fast <= 225e3 * (1 + 1e-9)
-    assert 27e-9 + 1.7e-12 * cd.r_dly >= s["dead_time_min"] * (1 - 1e-9)
+    assert 27e-9 + 1.7e-12 * cd.r_dly * (1 - t) >= s["dead_time_min"] * (1 - 1e-9)
     assert p_clip(fast, s["r_load"], s["supply"]) >= s["p_out"] * (1 - 1e-9)
     theta = min(_class_d_heat(s, slow), _class_d_heat(s, fast))
     assert theta == pytest.approx(cd.theta_sa_required, rel=1e-6, abs=1e-9)

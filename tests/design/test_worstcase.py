@@ -137,7 +137,7 @@ def test_class_d_yield_matches_a_closed_form():
     """P(Q <= q_max), Q = R_L sqrt(C / 2L): P(C <= 2 L q_max^2 / R_L^2) integrated over L (midpoint rule)."""
     cd = designed("class_d")
     s = {**cd.spec, "q_max": 0.9}
-    result = SimpleNamespace(f_sw=cd.f_sw, l_out=cd.l_out, c_out=cd.c_out, spec=s)
+    result = SimpleNamespace(r_osc=cd.r_osc, r_dly=cd.r_dly, l_out=cd.l_out, c_out=cd.c_out, spec=s)
     w = wc.analyse("class_d", result, n=200_000, seed=4)
     ls = cd.l_out * (1 + s["l_tolerance"] * (2 * (np.arange(100_000) + 0.5) / 100_000 - 1))
     c_lo, c_hi = cd.c_out * (1 - s["c_tolerance"]), cd.c_out * (1 + s["c_tolerance"])

@@ -220,16 +220,17 @@ def class_d_rows(cd) -> list[dict]:
             "; pin 17 (DELAY) to ground: its own 27 ns meets dead_time_min, no R_DLY" if cd.r_dly == 0 else "")),
         _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "",
              reason="the output stage; its heat sink is HS1"),
-        _resistor(sheet, "R1", "R_OSC, oscillator", cd.r_osc, 0.01, s["r_osc_series"], pin / cd.r_osc, t_a,
+        _resistor(sheet, "R1", "R_OSC, oscillator", cd.r_osc, s["r_tolerance"], s["r_osc_series"], pin / cd.r_osc, t_a,
                   f"sets {eng(cd.f_sw, 'Hz')} by eq 5 ({eng(cd.f_sw_min, 'Hz')} to {eng(cd.f_sw_max, 'Hz')} at the "
-                  "oscillator's tolerance)"),
-        *([_resistor(sheet, "R2", "R_DLY, dead time", cd.r_dly, 0.01, s["r_dly_series"], pin / cd.r_dly, t_a,
-                     f"dead time at least {s['dead_time_min'] * 1e9:.0f} ns")] if cd.r_dly > 0 else []),
+                  "oscillator's and R_OSC's, R_DLY's tolerance)"),
+        *([_resistor(sheet, "R2", "R_DLY, dead time", cd.r_dly, s["r_tolerance"], s["r_dly_series"], pin / cd.r_dly, t_a,
+                     f"dead time at least {s['dead_time_min'] * 1e9:.1f} ns at its low tolerance end")] if cd.r_dly > 0 else []),
         _row(sheet, "L1 L2", "output filter inductor, one per bridge output", cd.l_out, "H", s["l_tolerance"],
              current=i_sat, stress=i_peak, technology="powder or gapped ferrite core, low-loss at the switching "
              "frequency", package="power inductor",
              rating_text=f"saturation ≥ {eng(i_sat, 'A')} (1.2 × the worst peak {eng(i_peak, 'A')}, audio plus "
-                         f"ripple at clipping; a shorted output reaches the LM4651's 10 A limit first); rms ≥ "
+                         f"ripple at clipping; the design held it so for i_sat = {eng(s['i_sat'], 'A')}; a shorted "
+                         f"output reaches the LM4651's 10 A limit first); rms ≥ "
                          f"{eng(i_rms, 'A')} at the thermal basis; DCR ≤ {eng(s['l_dcr'] * cd.l_out, 'Ω')}",
              reason=f"{s['l_series']} value; the filter's corner {eng(cd.f_corner, 'Hz')}"),
         _row(sheet, "C1", "C_BYP, output filter capacitor", cd.c_out, "F", s["c_tolerance"], voltage=v_rating,

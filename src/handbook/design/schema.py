@@ -302,9 +302,11 @@ def _tables() -> dict[str, tuple[Param, ...]]:
                   meaning="largest Q of the output filter with the load (peaking above the band)"),
             Param(name="ripple_max", default=0.5, unit="V", high=100.0, **_POS,
                   meaning="largest switching residue at the load, rms"),
-            Param(name="i_sat", default=10.0, unit="A", high=1e3, **_POS,
-                  meaning="saturation current of the filter inductors (the LM4651's 10 A current limit applies "
-                          "too)", cite="LM4651/LM4652 Example Design, R_SCKT: peak and ripple below 10 A"),
+            Param(name="i_sat", default=12.0, unit="A", high=1e3, **_POS,
+                  meaning="rated saturation current of the filter inductors: the worst peak is held to i_sat / 1.2 "
+                          "(the book's saturation margin) and to the LM4651's 10 A current limit (12 A, an "
+                          "assumption: the smallest rating whose margin reaches that limit)",
+                  cite="LM4651/LM4652 Example Design, R_SCKT: peak and ripple below 10 A"),
             Param(name="l_tolerance", default=0.1, unit="1", meaning="inductor tolerance, fraction", **_FRACTION),
             Param(name="c_tolerance", default=0.05, unit="1", meaning="C_BYP tolerance, fraction (film, J)",
                   **_FRACTION),
@@ -329,6 +331,9 @@ def _tables() -> dict[str, tuple[Param, ...]]:
             Param(name="dead_time_min", default=35.5e-9, unit="s", high=1e-6, **_POS,
                   meaning="least dead time, against shoot-through",
                   cite="LM4651/LM4652: recommended R_DLY = 5 k, 27 ns + 1.7 pF x 5 k = 35.5 ns"),
+            Param(name="r_tolerance", default=0.01, unit="1", **_FRACTION,
+                  meaning="R_OSC and R_DLY tolerance, fraction (metal film, F; both are in the oscillator's "
+                          "corners and R_DLY's low end in the dead time's)"),
             _series("r_osc_series", "E24", "R_OSC"),
             _series("r_dly_series", "E24", "R_DLY"),
             Param(name="l_series", default="E12", unit="", meaning="E-series for the filter inductors",

@@ -199,8 +199,9 @@ def class_d(r) -> list:
               f"θ_SA = {s['theta_sa_available']:g} K/W available")
     return [
         words(f"{s['r_dly_series']} R_DLY at or above ({_at(s['dead_time_min'], 's')} − {_at(T_DEAD_0, 's')}) / "
-              f"{_at(C_DEAD, 'F')} per Ω, the LM4651 table's dead time at R_DLY = 0 plus eq 4's slope: "
-              f"{_at(r.r_dly, 'Ω')}", (r.r_dly, "Ω"), f"{here}: {s['r_dly_series']} series pick; LM4651/LM4652 "
+              f"({_at(C_DEAD * 1e3, 's')}/kΩ × (1 − {_pct(s['r_tolerance'])})), the LM4651 table's dead time at "
+              f"R_DLY = 0 plus eq 4's slope, met at R_DLY's low tolerance end: {_at(r.r_dly, 'Ω')}",
+              (r.r_dly, "Ω"), f"{here}: {s['r_dly_series']} series pick; LM4651/LM4652 "
               "table and eq (4)"),
         words(f"IPOPT, then a proven series search over {s['r_osc_series']} R_OSC, {s['l_series']} L and "
               f"{s['c_series']} C_BYP at the worst of the tolerance corners: R_OSC = {_at(r.r_osc, 'Ω')}, "
@@ -210,7 +211,8 @@ def class_d(r) -> list:
                       f"{_at(r.r_dly, 'Ω')})", "lm4651-eq5",
                       {r"\{R_{OSC}\}_{\Omega}": (r_eff, "1")}, (r.f_sw, "Hz")),
         words(f"Oscillator corners (−{_pct(s['osc_tol_slow'])}, +{_pct(s['osc_tol_fast'])}, eq 5 against the "
-              f"datasheet's table): {_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}",
+              f"datasheet's table, with R_OSC and R_DLY each ±{_pct(s['r_tolerance'])}): "
+              f"{_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}",
               (f"{_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}", ""), f"{here}: oscillator tolerance"),
         equation_step("Output filter's corner", "lm4651-filter",
                       {"L_1": (r.l_out, "H"), "C_{BYP}": (r.c_out, "F")}, (r.f_corner, "Hz")),

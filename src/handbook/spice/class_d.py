@@ -330,8 +330,9 @@ def design_check(result) -> dict:
     f_corner = run(circuit(base).netlist)["f_corner"]
     fo, lo, co = model.corner_factors(s)
     worst = 0.0
-    for kf, kl, kc in zip(fo, lo, co):
-        q = {**base, "f_sw": base["f_sw"] * kf, "l_out": base["l_out"] * kl, "c_out": base["c_out"] * kc}
+    for kf, kl, kc in zip(fo, lo, co):  # the design's own oscillator corners (R_OSC, R_DLY at theirs too)
+        q = {**base, "f_sw": result.f_sw_min if kf < 1 else result.f_sw_max, "l_out": base["l_out"] * kl,
+             "c_out": base["c_out"] * kc}
         worst = max(worst, run(ripple(q).netlist)["ripple"])
     return {"f_corner": f_corner, "f_corner_equation": float(eqs.filter_f0(result.l_out, result.c_out)),
             "ripple_at_load": worst, "ripple_at_load_equation": float(result.figures["ripple"]),

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...sources.lm4651 import circuit as lm4651
+from .. import ratings
 from ..solvers import Infeasible
 from . import model
 
@@ -228,9 +229,12 @@ def infeasible(s: dict, r_dly: float, searched=None):
             spec_key = "thd_test_power"
         asked = s[spec_key]
         shown = "an ideal heat sink, 0 K/W" if asked is None else f"{spec_key} = {fmt.format(asked)}"
-        if k == "inductor peak" and asked > lm4651.I_LIMIT:  # the LM4651's own current limit binds first
-            asked = lm4651.I_LIMIT
-            shown = f"the LM4651's current limit, {fmt.format(asked)} (i_sat = {fmt.format(s[spec_key])} is above it)"
+        if k == "inductor peak":  # the coils' saturation over the book's margin, or the LM4651's own limit
+            asked = model.i_peak_limit(s)
+            shown = (f"the LM4651's current limit, {fmt.format(asked)} (i_sat = {fmt.format(s[spec_key])} over the "
+                     f"saturation margin {ratings.SATURATION_MARGIN:g} is above it)" if asked == lm4651.I_LIMIT else
+                     f"i_sat = {fmt.format(s[spec_key])} over the saturation margin {ratings.SATURATION_MARGIN:g}, "
+                     f"{fmt.format(asked)}")
         parts.append(f"{label}: best {fmt.format(ev[key])} (asked {shown})")
         achievable[key] = ev[key]
         if k == "heat sink":

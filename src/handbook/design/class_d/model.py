@@ -1,9 +1,9 @@
 """LM4651/LM4652 joint design: every figure of a candidate (R_OSC, L, C, R_DLY) at every tolerance corner.
 
 The corners are enumerated, never assumed: the oscillator at eq 5 x (1 - osc_tol_slow) and x (1 +
-osc_tol_fast), L and C each at +- their tolerance (2 x 2 x 2 = 8 corners), and the LM4652 at its maximum
-R_DS(on) at the junction temperature and the Example Design's 350 ns over-modulation time. Every
-constraint takes its worst corner; the filter's band check takes its true worst over the whole L, C box
+osc_tol_fast), eq 5 taken with R_OSC and R_DLY at their own tolerance corners (``r_tolerance``), L and C
+each at +- their tolerance (2 x 2 x 2 = 8 corners), and the LM4652 at its maximum R_DS(on) at the junction
+temperature and the Example Design's 350 ns over-modulation time. Every constraint takes its worst corner; the filter's band check takes its true worst over the whole L, C box
 (:func:`band_deviation_box_db`), since peaking can be worst between corners. The functions broadcast
 over numpy arrays of candidates (a corner axis is added last), so the solver's snap, the exhaustive
 enumeration and the plots share one evaluator. The models themselves are in :mod:`handbook.sources.lm4651.circuit`.
@@ -16,6 +16,7 @@ import numpy as np
 
 from ...core import series
 from ...sources.lm4651 import circuit as lm4651
+from .. import ratings
 
 DEV = lm4651.DEVICE
 #: the search ranges of the series parts (H, F, ohm)
@@ -43,6 +44,33 @@ def corner_factors(s: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """
     fo = np.where(CORNERS[:, 0] < 0, 1 - s["osc_tol_slow"], 1 + s["osc_tol_fast"])
     return fo, 1 + s["l_tolerance"] * CORNERS[:, 1], 1 + s["c_tolerance"] * CORNERS[:, 2]
+
+
+def osc_corners(f_nom, r_dly, slow, fast, r_tol):
+    """The oscillator's slow and fast corners: eq 5 with R_OSC and R_DLY each at its ``r_tolerance`` corner
+    (f = 1e9 / (4000 + R_OSC - 0.4 R_DLY): slowest with R_OSC high and R_DLY low), times the table's spread
+    against eq 5 (1 - ``osc_tol_slow``, 1 + ``osc_tol_fast``). In terms of the nominal frequency, so the solver's
+    variable f serves too: with D = 1e9 / f = 4000 + R_OSC - 0.4 R_DLY, the slow corner's denominator is
+    D (1 + t) + t (0.8 R_DLY - 4000), the fast one's D (1 - t) - t (0.8 R_DLY - 4000).
+
+    Parameters
+    ----------
+    f_nom : float, numpy.ndarray or casadi.SX
+        The nominal frequency, eq 5 with the nominal parts, Hz.
+    r_dly : float
+        R_DLY, ohm.
+    slow, fast : float
+        ``osc_tol_slow`` and ``osc_tol_fast``, fractions.
+    r_tol : float
+        ``r_tolerance``, the fraction R_OSC and R_DLY may each stray.
+
+    Returns
+    -------
+    tuple
+        (slow corner, fast corner), Hz, broadcast as ``f_nom``.
+    """
+    d, k = 1e9 / f_nom, r_tol * (0.8 * r_dly - 4000.0)
+    return (1 - slow) * 1e9 / (d * (1 + r_tol) + k), (1 + fast) * 1e9 / (d * (1 - r_tol) - k)
 
 
 def band_deviation_db(f_audio, l_out, c_out, r_load):
@@ -209,6 +237,25 @@ def efficiency(s: dict, f_nom, l_out):
     return p / (p + loss)
 
 
+def i_peak_limit(s: dict) -> float:
+    """The largest worst-case inductor peak the design allows: the coils' rated saturation ``i_sat`` over the
+    book's saturation margin (:data:`~handbook.design.ratings.SATURATION_MARGIN`, 1.2: the BOM asks the same
+    rating), and never above the LM4651's 10 A current limit (the datasheet's R_SCKT: "ripple and peak current
+    must be lower than 10 amps").
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units).
+
+    Returns
+    -------
+    float
+        The peak current limit, A.
+    """
+    return min(s["i_sat"] / ratings.SATURATION_MARGIN, lm4651.I_LIMIT)
+
+
 def p_unclipped(s: dict) -> float:
     """The power that must not clip: p_out, or the THD+N test point if higher (above clipping THD+N is 1 %
     or more by the datasheet's own definition of the clipping point, so a test point there is no test).
@@ -282,24 +329,25 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
     r_osc, l_out, c_out, r_dly = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
                                                         (r_osc, l_out, c_out, r_dly)))
     f_nom = lm4651.f_sw_for(r_osc, r_dly)
-    fo, lo, co = corner_factors(s)
-    f, l, c = f_nom[..., None] * fo, l_out[..., None] * lo, c_out[..., None] * co
+    f_slow, f_fast = osc_corners(f_nom, r_dly, s["osc_tol_slow"], s["osc_tol_fast"], s["r_tolerance"])
+    _, lo, co = corner_factors(s)
+    f = np.where(CORNERS[:, 0] < 0, f_slow[..., None], f_fast[..., None])
+    l, c = l_out[..., None] * lo, c_out[..., None] * co
     rl, vs = s["r_load"], s["supply"]
     thd = lm4651.thd_n_measured(f, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"]).max(-1)
     ripple = lm4651.ripple_rms(f, l, c, rl, vs).max(-1)
     dev = band_deviation_box_db(s, l_out, c_out)
     q = lm4651.filter_q(l, c, rl).max(-1)
     i_pk = lm4651.inductor_peak(f, l, c, lm4651.v_clip_peak(f, rl, vs), rl, vs, s["f_audio"]).max(-1)
-    f_slow, f_fast = f_nom * (1 - s["osc_tol_slow"]), f_nom * (1 + s["osc_tol_fast"])
     p_clip = lm4651.p_clip(f_fast, rl, vs)
     need, tj, p_d, tj_bare = thermal(s, f_slow, f_fast)
-    t_dead = lm4651.dead_time_total(r_dly)
+    t_dead = lm4651.dead_time_total(r_dly * (1 - s["r_tolerance"]))  # R_DLY at its low corner
     sink = 0.0 if s["theta_sa_available"] is None else s["theta_sa_available"]
     margins = {
         "oscillator range": np.minimum(f_slow / DEV["f_min"] - 1, 1 - f_fast / DEV["f_max"]),
         "THD+N": 1 - thd / s["thd_max"], "clipping": p_clip / p_unclipped(s) - 1,
         "ripple": 1 - ripple / s["ripple_max"], "audio band": 1 - dev / s["droop_max"],
-        "filter Q": 1 - q / s["q_max"], "inductor peak": 1 - i_pk / min(s["i_sat"], lm4651.I_LIMIT),
+        "filter Q": 1 - q / s["q_max"], "inductor peak": 1 - i_pk / i_peak_limit(s),
         "dead time": t_dead / s["dead_time_min"] - 1,
         "heat sink": (need - sink) / (DEV["theta_jc"][s["package"]] + s["theta_cs"] + sink)}
     ok = np.ones(f_nom.shape, dtype=bool)
@@ -360,12 +408,13 @@ def one(s: dict, r_osc: float, l_out: float, c_out: float, r_dly: float) -> dict
 #: what sensitivity() switches on one at a time, from a design with every tolerance off
 TOLERANCES = {
     "oscillator (eq 5 vs table)": ("osc_tol_slow", "osc_tol_fast"),
+    "R_OSC, R_DLY tolerance": ("r_tolerance",),
     "inductor tolerance": ("l_tolerance",),
     "capacitor tolerance": ("c_tolerance",),
     "R_DS(on) max vs typ": ("rds_on_25",),
     "T_overmod 350 vs 310 ns": ("t_overmod",),
 }
-TYPICAL = {"osc_tol_slow": 0.0, "osc_tol_fast": 0.0, "l_tolerance": 0.0, "c_tolerance": 0.0,
+TYPICAL = {"osc_tol_slow": 0.0, "osc_tol_fast": 0.0, "r_tolerance": 0.0, "l_tolerance": 0.0, "c_tolerance": 0.0,
            "rds_on_25": 0.200, "t_overmod": DEV["t_overmod"]}
 
 
@@ -417,8 +466,9 @@ def axes(s: dict, r_dly: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """
     r = np.array(series.values(s["r_osc_series"], *R_OSC_RANGE))
     f = lm4651.f_sw_for(r, r_dly)
-    keep = (f > 0) & (f * (1 - s["osc_tol_slow"]) >= DEV["f_min"] * (1 - 1e-12)) & (
-        f * (1 + s["osc_tol_fast"]) <= DEV["f_max"] * (1 + 1e-12))
+    with np.errstate(divide="ignore"):
+        f_slow, f_fast = osc_corners(f, r_dly, s["osc_tol_slow"], s["osc_tol_fast"], s["r_tolerance"])
+    keep = (f > 0) & (f_fast > 0) & (f_slow >= DEV["f_min"] * (1 - 1e-12)) & (f_fast <= DEV["f_max"] * (1 + 1e-12))
     return r[keep], np.array(series.values(s["l_series"], *L_RANGE)), np.array(series.values(s["c_series"], *C_RANGE))
 
 
@@ -474,7 +524,8 @@ def pair_keys(s: dict, r_osc, l_out, r_dly):
     """
     f = lm4651.f_sw_for(r_osc, r_dly)
     eff = efficiency(s, f, l_out)
-    theta = np.minimum(heat(s, f * (1 - s["osc_tol_slow"]))[0], heat(s, f * (1 + s["osc_tol_fast"]))[0])
+    f_slow, f_fast = osc_corners(f, r_dly, s["osc_tol_slow"], s["osc_tol_fast"], s["r_tolerance"])
+    theta = np.minimum(heat(s, f_slow)[0], heat(s, f_fast)[0])
     theta = np.broadcast_to(theta, np.broadcast(eff, theta).shape)
     return (eff, theta) if s["objective"] == "efficiency" else (theta, eff)
 

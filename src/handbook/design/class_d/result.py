@@ -133,8 +133,9 @@ def _band_text(s: dict) -> str:
 
 
 def r_dly_for(s: dict) -> float:
-    """Closed form: the smallest series R_DLY whose dead time 27 ns + 1.7 pF R_DLY meets dead_time_min (0 if
-    the 27 ns at R_DLY = 0 already does: pin 17 to ground).
+    """Closed form: the smallest series R_DLY whose dead time 27 ns + 1.7 ns/kΩ x R_DLY meets dead_time_min at
+    R_DLY's low tolerance corner, R_DLY (1 - r_tolerance) (0 if the 27 ns at R_DLY = 0 already does: pin 17 to
+    ground).
 
     Parameters
     ----------
@@ -151,7 +152,7 @@ def r_dly_for(s: dict) -> float:
     Infeasible
         When ``dead_time_min`` needs more than 1 Mohm (``achievable``: ``dead_time_max``, s).
     """
-    need = (s["dead_time_min"] - lm4651.T_DEAD_0) / lm4651.C_DEAD
+    need = (s["dead_time_min"] - lm4651.T_DEAD_0) / lm4651.C_DEAD / (1 - s["r_tolerance"])
     if need <= 0:
         return 0.0
     if need > R_DLY_RANGE[1]:
@@ -160,16 +161,17 @@ def r_dly_for(s: dict) -> float:
     return series.at_least(s["r_dly_series"], need * (1 - 1e-12))
 
 
-def _params(s: dict) -> list[float]:
-    """The spec as the NLP's parameter vector (in the order of NAMES)."""
+def _params(s: dict, r_dly: float) -> list[float]:
+    """The spec and R_DLY as the NLP's parameter vector (in the order of NAMES)."""
     p = {"p_out": s["p_out"], "r_load": s["r_load"], "supply": s["supply"], "t_a": s["t_ambient"],
          "path": s["theta_cs"] + DEV["theta_jc"][s["package"]], "sink": s["theta_sa_available"] or 0.0,
          "thd_max": s["thd_max"], "p_test": s["thd_test_power"], "w_cont": float(s["p_continuous"] is not None),
          "clip_share": model.CLIP_SHARE[s["thermal_basis"]],
          "p_cont": s["p_continuous"] or 0.0, "tol_slow": s["osc_tol_slow"], "tol_fast": s["osc_tol_fast"],
+         "tol_r": s["r_tolerance"], "r_dly": r_dly,
          "tol_l": s["l_tolerance"], "tol_c": s["c_tolerance"], "f_audio": s["f_audio"],
          "g_band": 10 ** (s["droop_max"] / 10), "q_max": s["q_max"], "ripple_max": s["ripple_max"],
-         "i_max": min(s["i_sat"], lm4651.I_LIMIT), "dcr": s["l_dcr"], "t_target": DEV["tj_max"] - s["tj_margin"],
+         "i_max": model.i_peak_limit(s), "dcr": s["l_dcr"], "t_target": DEV["tj_max"] - s["tj_margin"],
          "rds25": s["rds_on_25"], "t_om": s["t_overmod"], "band": s["thd_bandwidth"],
          "p_need": model.p_unclipped(s)}
     return [p[n] for n in NAMES]
@@ -189,13 +191,14 @@ def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, flo
     THD+N jumps where an oscillator corner crosses the analyser's band, so the NLP is solved on each side
     of it, both smooth: ``above`` holds the slowest corner above the band (distortion alone), else the
     residue is counted at every corner (at a corner above the band that is conservative)."""
-    out = [("oscillator range", f * (1 - P["tol_slow"]) / DEV["f_min"], 1.0, ca.inf),
-           ("oscillator range", f * (1 + P["tol_fast"]) / DEV["f_max"], -ca.inf, 1.0)]
+    slow, fast = _corners(f, P)
+    out = [("oscillator range", slow / DEV["f_min"], 1.0, ca.inf),
+           ("oscillator range", fast / DEV["f_max"], -ca.inf, 1.0)]
     if above:
-        out.append(("analyser band", f * (1 - P["tol_slow"]) / P["band"], 1.0, ca.inf))
+        out.append(("analyser band", slow / P["band"], 1.0, ca.inf))
     rl, vs = P["r_load"], P["supply"]
     for so, sl, sc in model.CORNERS:
-        fc = f * (1 - P["tol_slow"] if so < 0 else 1 + P["tol_fast"])
+        fc = slow if so < 0 else fast
         lc, cc = l_out * (1 + sl * P["tol_l"]), c_out * (1 + sc * P["tol_c"])
         thd = lm4651.thd_n_joint(fc, lc, cc, P["p_test"], rl, vs)
         if not above:
@@ -211,13 +214,17 @@ def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, flo
     l_star = ca.fmin(ca.fmax(lm4651.filter_worst_peak_l(P["f_audio"], c_hi, rl), l_out * (1 - P["tol_l"])),
                      l_out * (1 + P["tol_l"]))
     out.append(("audio band", lm4651.filter_gain2(P["f_audio"], l_star, c_hi, rl) / P["g_band"], -ca.inf, 1.0))
-    fast = f * (1 + P["tol_fast"])
     out.append(("clipping", lm4651.p_clip(fast, rl, vs) / P["p_need"], 1.0, ca.inf))
     return out
 
 
+def _corners(f, P):
+    """The oscillator's slow and fast corners of the solver's f (:func:`~handbook.design.class_d.model.osc_corners`)."""
+    return model.osc_corners(f, P["r_dly"], P["tol_slow"], P["tol_fast"], P["tol_r"])
+
+
 NAMES = ("p_out", "r_load", "supply", "t_a", "path", "sink", "thd_max", "p_test", "w_cont", "clip_share", "p_cont", "tol_slow",
-         "tol_fast", "tol_l", "tol_c", "f_audio", "g_band", "q_max", "ripple_max", "i_max", "dcr", "t_target",
+         "tol_fast", "tol_r", "r_dly", "tol_l", "tol_c", "f_audio", "g_band", "q_max", "ripple_max", "i_max", "dcr", "t_target",
          "rds25", "t_om", "band", "p_need")
 
 
@@ -230,8 +237,7 @@ def _nlp(objective: str, above: bool):
     P = {n: p[i] for i, n in enumerate(NAMES)}
     f, l_out, c_out, t = x[0] * F_S, x[1] * L_S, x[2] * C_S, x[3]
     cons = _constraints(f, l_out, c_out, P, above)
-    for so in (-1, 1):
-        fc = f * (1 - P["tol_slow"] if so < 0 else 1 + P["tol_fast"])
+    for fc in _corners(f, P):
         theta = _theta_needed(fc, P)
         cons += [("heat sink", theta - P["sink"], 0.0, ca.inf), ("heat sink objective", theta - t, 0.0, ca.inf)]
     loss = (lm4651.p_switch(f, P["p_out"]) + lm4651.coil_loss(P["p_out"], P["r_load"], l_out, P["dcr"])) / P["p_out"]
@@ -242,7 +248,7 @@ def _nlp(objective: str, above: bool):
     return solver, [c[0] for c in cons], [c[2] for c in cons], [c[3] for c in cons]
 
 
-def solve(s: dict) -> list[Solution]:
+def solve(s: dict, r_dly: float) -> list[Solution]:
     """IPOPT on the continuous problem: (f_sw, L, C) as reals, every constraint at every corner, on each side
     of the analyser's band: both solutions, the better solved one first.
 
@@ -250,6 +256,8 @@ def solve(s: dict) -> list[Solution]:
     ----------
     s : dict
         The checked ``[class_d]`` table (SI units; temperatures in C).
+    r_dly : float
+        R_DLY, ohm (:func:`r_dly_for`): it moves eq 5 and its tolerance the oscillator's corners.
 
     Returns
     -------
@@ -266,7 +274,7 @@ def solve(s: dict) -> list[Solution]:
     found = []
     for above in (False, True):
         solver, names, lbg, ubg = _nlp(s["objective"], above)
-        r = solver(x0=x0, p=_params(s), lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg)
+        r = solver(x0=x0, p=_params(s, r_dly), lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg)
         x = np.array(r["x"]).ravel() * [F_S, L_S, C_S, 1.0]
         sol = Solution(x, np.array(r["lam_g"]).ravel(), names, bool(solver.stats()["success"]))
         found.append((not sol.success, float(r["f"]), above, sol))
@@ -372,7 +380,7 @@ def design(spec: dict | None = None) -> ClassDResult:
     """
     s = checked(spec)
     r_dly = r_dly_for(s)
-    sols = solve(s)
+    sols = solve(s, r_dly)
     parts, fig, searched = snap(s, [sol.x for sol in sols], r_dly)
     if parts is None:
         infeasible(s, r_dly, searched)  # with no incumbent the set searched was the whole grid

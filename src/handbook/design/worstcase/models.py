@@ -6,9 +6,10 @@ its corners vary.
   between the low and high switching levels) and its swing at ``rpm_max`` (limit ``min_excursion``), over the
   capacitor tolerance and the TDA5144's charge current and two levels; with CAP-ST and CAP-TI chosen (motor
   data, ``flyback_time``) their quantities too (:mod:`.timers`);
-* class_d: the oscillator (limits: the LM4651's 50 .. 225 kHz), the output filter's corner (no limit of its own:
+* class_d: the oscillator (limits: the LM4651's 50 .. 225 kHz), the dead time (``dead_time_min``), the output
+  filter's corner (no limit of its own:
   reported), its Q (``q_max``), the switching residue at the load (``ripple_max``) and THD+N as the analyser
-  reads it (``thd_max``), over L, C_BYP and the oscillator's spread against eq 5;
+  reads it (``thd_max``), over R_OSC, R_DLY, L, C_BYP and the oscillator's spread against eq 5;
 * converter: the current the converter delivers at ``v_supply_min`` (limit ``i_out``) and the full-load
   frequency there (limit the spec's ``f_min``) and at its lowest over the supply range (limit 20 kHz with
   ``audible = "avoid"``), over R1, L1 (A_L) and the TCA5600's V12(H), V_CE(sat) and V_F (each +-the spec's
@@ -100,18 +101,22 @@ def class_d(result) -> Model:
     Parameters
     ----------
     result : ClassDResult
-        A designed stage; ``f_sw`` (eq 5, nominal), ``l_out``, ``c_out`` and the checked spec are read.
+        A designed stage; ``r_osc``, ``r_dly``, ``l_out``, ``c_out`` and the checked spec are read.
 
     Returns
     -------
     Model
-        Inputs ``osc`` (the oscillator's factor on eq 5), ``l``, ``c``; quantities ``f_sw`` (Hz, limits the
-        LM4651's range), ``f_corner`` (Hz, no limit), ``q`` (limit ``q_max``), ``ripple`` (V rms, limit
+        Inputs ``r_osc``, ``r_dly`` (ohm, +-``r_tolerance``; R_DLY only where one is fitted), ``osc`` (the
+        oscillator's factor on eq 5), ``l``, ``c``; quantities ``f_sw`` (Hz, limits the LM4651's range),
+        ``dead_time`` (s, limit ``dead_time_min``), ``f_corner`` (Hz, no limit), ``q`` (limit ``q_max``), ``ripple`` (V rms, limit
         ``ripple_max``) and ``thd_n`` (fraction, limit ``thd_max``).
     """
-    s, f_nom, lo, co = result.spec, result.f_sw, result.l_out, result.c_out
-    rl, vs = s["r_load"], s["supply"]
-    srcs = (Source("osc", "LM4651 oscillator (factor on eq 5)", 1 - s["osc_tol_slow"], 1 + s["osc_tol_fast"], 1.0,
+    s, lo, co = result.spec, result.l_out, result.c_out
+    rl, vs, rt = s["r_load"], s["supply"], s["r_tolerance"]
+    res = f"class_d.r_tolerance = {rt:g} (metal film); " + UNIFORM
+    resistors = tuple(Source(k, part, v * (1 - rt), v * (1 + rt), v, "R_OSC, R_DLY tolerance", res, unit="ohm")
+                      for k, part, v in (("r_osc", "R_OSC", result.r_osc), ("r_dly", "R_DLY", result.r_dly)) if v > 0)
+    srcs = resistors + (Source("osc", "LM4651 oscillator (factor on eq 5)", 1 - s["osc_tol_slow"], 1 + s["osc_tol_fast"], 1.0,
                    "oscillator", "LM4651 table against eq 5 (typicals; no limit is printed): osc_tol_slow, "
                    "osc_tol_fast; " + UNIFORM),
             Source("l", "L1, L2", lo * (1 - s["l_tolerance"]), lo * (1 + s["l_tolerance"]), lo, "inductor tolerance",
@@ -120,14 +125,17 @@ def class_d(result) -> Model:
             Source("c", "C_BYP", co * (1 - s["c_tolerance"]), co * (1 + s["c_tolerance"]), co, "capacitor tolerance",
                    f"class_d.c_tolerance = {s['c_tolerance']:g} (film, J); " + UNIFORM, unit="F"))
 
-    def f(osc, l, c):
-        fs = f_nom * osc
-        return {"f_sw": fs, "f_corner": lm4651.filter_f0(l, c), "q": lm4651.filter_q(l, c, rl),
+    def f(osc, l, c, r_osc, r_dly=0.0):
+        fs = lm4651.f_sw_for(r_osc, r_dly) * osc
+        return {"f_sw": fs, "dead_time": lm4651.dead_time_total(r_dly) + 0 * osc, "f_corner": lm4651.filter_f0(l, c),
+                "q": lm4651.filter_q(l, c, rl),
                 "ripple": lm4651.ripple_rms(fs, l, c, rl, vs),
                 "thd_n": lm4651.thd_n_measured(fs, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"])}
 
     measures = (Measure("f_sw", "switching frequency", "Hz", lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"],
                         "oscillator range"),
+                Measure("dead_time", "dead time (27 ns + 1.7 ns/kΩ × R_DLY)", "s", s["dead_time_min"], None,
+                        "dead_time_min"),
                 Measure("f_corner", "output filter corner", "Hz"),
                 Measure("q", "output filter Q with the load", "1", None, s["q_max"], "q_max"),
                 Measure("ripple", "switching residue at the load, rms", "V", None, s["ripple_max"], "ripple_max"),

@@ -94,7 +94,18 @@ def results_table(t: str, result) -> str:
 
 
 def margins_table(t: str, result) -> str:
-    """The design's margins: its results that are margins (fractions of a limit)."""
+    """The design's margins: its results that are margins (fractions of a limit); the class-D stage's are per
+    check (:data:`~handbook.design.class_d.model.CHECKS`, each at its worst corner), named with what it is held to."""
+    if t == "class_d":
+        from ...design.class_d.explain import SHOW
+        from ...design.class_d.model import CHECKS
+
+        held = {"oscillator range": "the LM4651's 50 kHz .. 225 kHz", "dead time": "dead_time_min",
+                "inductor peak": "i_sat / 1.2 and the LM4651's 10 A limit"}
+        m = result.figures["margins"]
+        return table(["check (worst corner)", "margin", "held to"],
+                     [[esc(k), value(f"{t}.margin.{k}", float(m[k]), "%"),
+                       esc(held.get(k) or SHOW.get(k, ("", "", "", ""))[3] or "")] for k in CHECKS], (1,))
     rows = [[esc(o.label), value(f"{t}.{o.key}", getattr(result, o.key), o.unit)]
             for o in OUTPUTS[t] if "margin" in o.key and o.unit == "%"]
     return table(["margin", "value"], rows, (1,)) if rows else ""
