@@ -1,12 +1,13 @@
 """LM4651/LM4652 joint design: every figure of a candidate (R_OSC, L, C, R_DLY) at every tolerance corner.
 
-The corners are enumerated, never assumed: the oscillator at eq 5 x (1 - osc_tol_slow) and x (1 +
-osc_tol_fast), eq 5 taken with R_OSC and R_DLY at their own tolerance corners (``r_tolerance``), L and C
-each at +- their tolerance (2 x 2 x 2 = 8 corners), and the LM4652 at its maximum R_DS(on) at the junction
-temperature and the Example Design's 350 ns over-modulation time. Every constraint takes its worst corner; the filter's band check takes its true worst over the whole L, C box
-(:func:`band_deviation_box_db`), since peaking can be worst between corners. The functions broadcast
-over numpy arrays of candidates (a corner axis is added last), so the solver's snap, the exhaustive
-enumeration and the plots share one evaluator. The models themselves are in :mod:`handbook.sources.lm4651.circuit`.
+The corners are enumerated, never assumed: the oscillator at eq 5 x (1 - osc_tol_slow) and x (1 + osc_tol_fast), eq
+5 taken with R_OSC and R_DLY at their own tolerance corners (``r_tolerance``), L and C each at +- their tolerance
+(2 x 2 x 2 = 8 corners), and the LM4652 at its maximum R_DS(on) at the junction temperature and the Example
+Design's 350 ns over-modulation time. Every constraint takes its worst corner; the filter's band check takes its
+true worst over the whole L, C box (:func:`band_deviation_box_db`), since peaking can be worst between corners. The
+functions broadcast over numpy arrays of candidates (a corner axis is added last), so the solver's snap, the
+exhaustive enumeration and the plots share one evaluator. The models themselves are in
+:mod:`handbook.sources.lm4651.circuit`.
 """
 from __future__ import annotations
 
