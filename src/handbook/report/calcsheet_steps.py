@@ -166,8 +166,8 @@ def shown(value: float, unit: str) -> tuple[str, str]:
     tuple of str
         (LaTeX with a thin space before the unit, plain text as :func:`~handbook.core.units.eng` writes it).
     """
-    if unit == "rpm":
-        number = eng(value * 60.0)
+    if unit == "rpm":  # to the revolution, as the results tables show speeds (10259 rpm, not 10260)
+        number = f"{value * 60.0:.0f}"
         return rf"{number}\,\text{{rpm}}", f"{number} rpm"
     if unit in _PLAIN:
         tex = _plain_number(value)

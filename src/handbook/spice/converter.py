@@ -253,3 +253,70 @@ def draw(ps: tuple[Part, ...]):
 
 
 CONTROL_GAP = 0.35  # the dashed control line stops this short of the switch's symbol
+
+
+def _corner_params(result, supply: float, ends: tuple[int, ...]) -> dict:
+    """The deck's parameters with the designed L1 and R1 and the TCA5600 at one corner of the design's box: R1
+    +-r1_tolerance, L1 +-a_l_tolerance, V12(H), V_CE(sat) and V_F each +-device_spread (``ends``: -1 or 1 each,
+    in that order), VCC2 at ``supply``."""
+    from ..design.converter import source_params
+
+    s = result.spec
+    k = dict(zip(("r1", "l1", "v12h", "vce_sat", "v_f"), ends))
+    spread = s["device_spread"]
+    p = {**defaults(), **source_params(s), "v_cc2_min": supply}
+    p.update(r1=result.r1_part * (1 + k["r1"] * s["r1_tolerance"]), l1=result.l1_nominal * (1 + k["l1"] * s["a_l_tolerance"]),
+             **{key: p[key] * (1 + k[key] * spread) for key in ("v12h", "vce_sat", "v_f")})
+    return p
+
+
+def _worst(result, supplies, key: str) -> dict:
+    """The corner (of 32, at each supply) where the deck's own exact figures (:func:`exact`: its KVL with the
+    restart and D1's falling drop, not the design's equations) give the least ``key``."""
+    import itertools
+
+    best = None
+    for v in supplies:
+        for ends in itertools.product((-1, 1), repeat=5):
+            p = _corner_params(result, v, ends)
+            if p["v_out2"] + p["regulator_drop"] + p["v_f"] <= v:  # no dump: the coil cannot discharge into C2
+                continue
+            x = exact(p)[f"{key}_deck"]
+            if best is None or x < best[0]:
+                best = (x, p)
+    return best[1]
+
+
+def design_check(result) -> dict:
+    """A designed TCA5600 converter simulated at its worst corners: the current delivered into C2 at
+    v_supply_min at the corner that delivers least, and the full-load frequency at the corner where it is lowest
+    (over the whole supply range with ``audible = "avoid"``, the design's ``f_sw_min``; else at v_supply_min,
+    against ``f_min``), the corners found by the deck's own exact figures over the design's box. Each beside the
+    design's figure ("*_equation"), the difference the deck's physics predicts against it ("*_expected": eq 2's
+    ramp, D1's falling drop and the restart, :func:`exact`, at the corner simulated) and the step's bound
+    ("*_rtol", 2 h over the time per crossing, as :func:`circuit`); "meets_spec": SPICE delivers at least
+    ``i_out`` and switches no lower than 20 kHz (avoid) or ``f_min``."""
+    from ..design.converter.result import AUDIO_BAND
+    from ..design.worstcase import engine, models
+
+    s = result.spec
+    avoid = s["audible"] == "avoid"
+    lowest = result.f_sw_min if avoid else float(engine.corners(models.converter(result))["f_sw_vmin"].min())
+    out = {"corners": 2, "corners_searched": 32 * (3 if avoid else 2)}
+    for key, eq, supplies in (("i_out", result.i_out_least, (s["v_supply_min"],)),
+                              ("f", lowest, (s["v_supply_min"], s["v_supply_max"]) if avoid else (s["v_supply_min"],))):
+        p = _worst(result, supplies, key)
+        got, e, x = run(circuit(p).netlist), expected(p), exact(p)
+        h = 1 / e["f"] / STEPS_PER_PERIOD
+        rtol = 2 * h / e["t2"] + 2 * h * e["f"] if key == "i_out" else 2 * h * e["f"]
+        out |= {key: got[key], f"{key}_equation": eq, f"{key}_expected": x[f"{key}_deck"] / eq - 1,
+                f"{key}_rtol": rtol, f"{key}_supply": p["v_cc2_min"]}
+    floor, name = (AUDIO_BAND, "the audio band's 20 kHz (audible = avoid)") if avoid else (s["f_min"], "f_min")
+    out["misses"] = ([f"the current into C2 at v_supply_min, {eng(out['i_out'], 'A')}, is below i_out = "
+                      f"{eng(s['i_out'], 'A')}"] if out["i_out"] < s["i_out"] else []) + (
+        [f"the full-load frequency at {eng(out['f_supply'], 'V')} and its slow corner, {eng(out['f'], 'Hz')}, is below "
+         f"{name} ({eng(floor, 'Hz')}): the design's eq 2 holds R1's drop at V12(H) through t1, the circuit's ramps "
+         f"from zero, so t1 is longer and the frequency {out['f_expected']:+.2%} off the design's"]
+        if out["f"] < floor else [])
+    out["meets_spec"] = not out["misses"]
+    return out

@@ -387,8 +387,10 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
     if outside:
         rng = material["steinmetz"]
         out.append(f"core loss extrapolated: {c.material}'s Steinmetz fit spans {eng(rng[0]['f_low'], 'Hz')} to "
-                   f"{eng(rng[-1]['f_high'], 'Hz')}, the full-load frequency over the supply range "
-                   f"{eng(min(freqs), 'Hz')} to {eng(max(freqs), 'Hz')}")
+                   f"{eng(rng[-1]['f_high'], 'Hz')}; the loss is taken at the largest flux swing (L1 at its high "
+                   f"end, the highest peak current), where the full-load frequency over the supply range runs "
+                   f"{eng(min(freqs), 'Hz')} to {eng(max(freqs), 'Hz')} (over every corner "
+                   f"{eng(op['f_sw_min'], 'Hz')} to {eng(op['f_sw_max'], 'Hz')})")
     f_top = max(op["f_sw_max"], 1.0)
     skin = math.sqrt(RHO_CU * (1 + ALPHA_CU * 80) / (math.pi * f_top * MU0))
     if c.wire_diameter is not None and c.wire_diameter > 2 * skin:

@@ -76,6 +76,20 @@ def parts_table(rows: list[dict]) -> str:
                    esc(readable(r["rating_text"])), _rating_use(r)] for r in rows], (2, 5))
 
 
+#: per design table: what its drawing shows that is not a part to fit (the simulation's stimulus, a device's inside)
+NOT_FITTED = {
+    "current_limiter": "VS is the supply and IM the motor current, ramped from zero to the value shown: the "
+                       "simulation's stimulus, not parts to fit; U1 is the TDA5144's op-amp with the offset and bias "
+                       "currents shown.",
+    "class_d": "VO1 and VO2 stand for the LM4652's two half-bridges (a ±V_s square wave at the switching frequency); "
+               "R_L is the loudspeaker.",
+    "converter": "VCC2 is the supply; S1 (the switch, with its V_CE(sat)) and U1 (the comparator, at V12(H)) are "
+                 "inside the TCA5600; VC2 stands for C2 at the regulator's input.",
+    "commutation": "I_CH, I_DIS, V_LOW and V_HIGH are the TDA5144's pin currents and switching levels (typical), not "
+                   "parts to fit.",
+}
+
+
 def _schematic(t: str, result) -> str:
     from ...spice import designed
 
@@ -84,7 +98,7 @@ def _schematic(t: str, result) -> str:
     except Exception as exc:  # a drawing that fails must not lose the report: say so in its place
         return note(f"schematic not drawn: {type(exc).__name__}: {exc}")
     return (f'<figure class="schematic">{inline_svg(svg, f"sch-{t}")}<figcaption>The designed circuit with the chosen '
-            f"values (the circuit SPICE simulates).</figcaption></figure>")
+            f"values (the circuit SPICE simulates). {esc(NOT_FITTED.get(t, ''))}</figcaption></figure>")
 
 
 def results_table(t: str, result) -> str:

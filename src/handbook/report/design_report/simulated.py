@@ -15,11 +15,19 @@ def _unit(u: str) -> str:
     return u.replace("ohm", "Ω")
 
 
+def _difference(r: dict) -> str:
+    """The difference as a person reads it: its size, or signed beside the one the circuit's physics predicts."""
+    if not r.get("expected_difference"):
+        return f"{r['rel_diff']:.3%}".replace("%", " %")
+    signed = r["spice"] / r["equation"] - 1
+    return f"{signed:+.3%} (expected {r['expected_difference']:+.3%})".replace("%", " %")
+
+
 def confirm_table(rows: list[dict]) -> str:
     """SPICE's figures beside the design's own: quantity, design, SPICE, difference, tolerance, verdict."""
     return table(["quantity", "design (worst corner)", "SPICE (worst corner)", "difference", "tolerance", "verdict"],
                  [[esc(r["quantity"]), esc(eng(r["equation"], _unit(r["unit"]))), esc(eng(r["spice"], _unit(r["unit"]))),
-                   f"{r['rel_diff']:.3%}".replace("%", " %"), f"±{r['rtol']:.2%}".replace("%", " %"),
+                   _difference(r), f"±{r['rtol']:.2%}".replace("%", " %"),
                    f'<span class="{"ok" if r["agrees"] else "warn"}">{esc(r["verdict"])}</span>'] for r in rows],
                  (1, 2, 3, 4))
 
@@ -139,7 +147,11 @@ def section(ctx) -> str:
         return note("SPICE confirmation skipped: --no-spice was given")
     if runner.available() is None:
         return note(f"SPICE confirmation skipped: {runner.why_unavailable()}")
-    out = []
+    out = ["<p>Each verdict: <b>agrees</b>, an independent check (SPICE computes the figure by its own means) "
+           "within its tolerance; <b>consistent (by construction)</b>, a figure SPICE reaches by the same arithmetic "
+           "as the design (it checks the corner search and the deck, not the formula); <b>differs</b>, outside its "
+           "tolerance. Where the circuit's physics predicts a difference from the design's equations, the table "
+           "shows it beside the difference, and the tolerance is about it.</p>"]
     for t, result in ctx.designed.items():
         out.append(f"<h3>{esc(title(t))}</h3>")
         try:
@@ -147,7 +159,11 @@ def section(ctx) -> str:
                 figures = checks.confirm({t: result})[t]
                 out.append(confirm_table(checks.confirm_rows(t, result, figures)))
                 if "meets_spec" in figures:
-                    corners = f" ({figures['corners']} corners simulated)" if "corners" in figures else ""
+                    corners = f" ({figures['corners']} corners simulated" if "corners" in figures else ""
+                    if "corners_searched" in figures:
+                        corners += (f", the worst of {figures['corners_searched']} by the circuit's own exact "
+                                    "figures")
+                    corners += ")" if corners else ""
                     out.append(f"<p>SPICE's worst corners meet the spec: <b>{'yes' if figures['meets_spec'] else 'no'}"
                                f"</b>{corners}.</p>")
                 ctx.spice_warnings.extend((t, f"SPICE: {w}") for w in checks.warnings(t, figures))
