@@ -117,6 +117,34 @@ def test_limiter_yield_matches_a_plain_python_loop():
     assert w.yields["i_must_trip"] == pytest.approx(high_ok / n, abs=1.5 / n)
 
 
+def test_limiter_yield_matches_a_lot_of_its_own():
+    """The same question on a lot the engine did not draw: the test's own sampler (another generator, another
+    seed, every input scaled from one matrix of uniforms in its own order, the ranges written from the spec here)
+    through the node equations at both ends of each board's temperature span. Two independent lots of one
+    design agree within four standard deviations of their difference; a wrong range or distribution in the
+    engine would move its yield by more."""
+    lim = designed("current_limiter")
+    s = {**lim.spec, "i_no_trip": 1.15, "i_must_trip": 1.45}
+    n = 200_000
+    w = wc.analyse("current_limiter", SimpleNamespace(r7=lim.r7, network=lim.network, spec=s), n=n, seed=11)
+    t, t7, vz, tc = s["resistor_tolerance"], s["r7_tolerance"], s["zener_voltage"], s["zener_tc"]
+    ranges = [(lim.r7 * (1 - t7), lim.r7 * (1 + t7))] + [(r * (1 - t), r * (1 + t)) for r in lim.network]
+    ranges += [(vz * (1 - s["zener_tolerance"]), vz * (1 + s["zener_tolerance"])),
+               (0.03 / 0.08 * tc, tc),  # the BZX79's +0.03 .. +0.08 %/K
+               (-s["offset"], s["offset"]), (-s["input_bias"], s["input_bias"]),
+               (-s["input_offset_current"], s["input_offset_current"])]
+    u = np.random.Generator(np.random.PCG64DXSM(20261127)).random((len(ranges), n))[::-1]  # reversed order
+    r7, r9, r10, r11, r12, r13, v_z, k, vos, i_avg, i_diff = (lo + (hi - lo) * x for (lo, hi), x in zip(ranges, u))
+    ip, im = i_avg + i_diff / 2, i_avg - i_diff / 2
+    cold, hot = (_limiter_trip(r7, r9, r10, r11, r12, r13, v_z + sign * k * s["temp_span"], vos, ip, im)
+                 for sign in (-1, 1))
+    mine = {"i_no_trip": float((np.minimum(cold, hot) >= s["i_no_trip"]).mean()),
+            "i_must_trip": float((np.maximum(cold, hot) <= s["i_must_trip"]).mean())}
+    for limit, p in mine.items():
+        assert 0.5 < p < 0.999  # the limit bites
+        assert w.yields[limit] == pytest.approx(p, abs=4 * math.sqrt(2 * p * (1 - p) / n)), limit
+
+
 def test_commutation_yield_matches_a_closed_form():
     """P(swing at rpm_max >= floor) = P(I >= floor C / t_fast), I and C independent uniforms: the integral over
     C of I's tail, by the midpoint rule on a fine grid; a floor that bites."""
