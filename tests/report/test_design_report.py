@@ -188,6 +188,27 @@ def test_a_low_yield_and_a_failed_analysis_are_warnings():
     assert "worst-case analysis failed: ValueError: no model" in page[page.index('id="notes"'):]
 
 
+def test_a_figure_or_schematic_that_fails_is_a_warning(monkeypatch):
+    """Section 2 draws what it can: a schematic or a plot that raises is named in its place and among section
+    7's warnings."""
+    from handbook.design import spec as specmod
+    from handbook.report import design_report
+    from handbook.report.design_report import sections
+    from handbook.spice import designed
+
+    def broken(*a, **k):
+        raise RuntimeError("no axes")
+
+    monkeypatch.setattr(sections, "_figures", broken)
+    monkeypatch.setattr(designed, "drawing", broken)
+    spec = specmod.parse({"class_d": {}})
+    ctx = design_report.context(spec, specmod.run_each(spec), "class_d.toml", no_spice=True)
+    circuits, notes = design_report.body(ctx, "circuits"), design_report.body(ctx, "notes")
+    assert "figures not drawn: RuntimeError: no axes" in circuits and "schematic not drawn" in circuits
+    assert "figures of how the choice was made not drawn: RuntimeError" in notes
+    assert "schematic not drawn: RuntimeError: no axes" in notes
+
+
 #: run in the page once loaded: what Chromium made of it, as JSON in a <pre> at the end of the body
 PROBE = """<script>window.addEventListener("load", () => {
   const box = e => { const r = e.getBoundingClientRect(); return r.width > 0 && r.height > 0; };

@@ -90,12 +90,14 @@ NOT_FITTED = {
 }
 
 
-def _schematic(t: str, result) -> str:
+def _schematic(t: str, result, warned: list | None = None) -> str:
     from ...spice import designed
 
     try:
         svg = designed.svg(designed.drawing(t, result))
     except Exception as exc:  # a drawing that fails must not lose the report: say so in its place
+        if warned is not None:  # and among the warnings (section 7)
+            warned.append((t, f"schematic not drawn: {type(exc).__name__}: {exc}"))
         return note(f"schematic not drawn: {type(exc).__name__}: {exc}")
     return (f'<figure class="schematic">{inline_svg(svg, f"sch-{t}")}<figcaption>The designed circuit with the chosen '
             f"values (the circuit SPICE simulates). {esc(NOT_FITTED.get(t, ''))}</figcaption></figure>")
@@ -155,7 +157,7 @@ def _figures(t: str, result) -> list[tuple[object, str]]:
     return []
 
 
-def choice_figures(t: str, result) -> str:
+def choice_figures(t: str, result, warned: list | None = None) -> str:
     """How the choice was made, as inline SVG figures (a plot that fails is named in its place)."""
     import matplotlib.pyplot as plt
 
@@ -164,6 +166,8 @@ def choice_figures(t: str, result) -> str:
     try:
         figs = _figures(t, result)
     except Exception as exc:  # a plot that fails must not lose the report: say so in its place
+        if warned is not None:  # and among the warnings (section 7)
+            warned.append((t, f"figures of how the choice was made not drawn: {type(exc).__name__}: {exc}"))
         return note(f"figures not drawn: {type(exc).__name__}: {exc}")
     out = []
     for k, (fig, caption) in enumerate(figs):
@@ -177,11 +181,11 @@ def circuits_section(ctx) -> str:
     out = [MARGIN_MATH]
     for t, result in ctx.designed.items():
         sheet = SHEETS[t][0]
-        out += [f'<h3 id="circuit-{t}">{esc(title(t))}</h3>', _schematic(t, result),
+        out += [f'<h3 id="circuit-{t}">{esc(title(t))}</h3>', _schematic(t, result, ctx.spice_warnings),
                 f"<p><b>What binds:</b> {esc(str(result.binding))}</p>",
                 "<h4>Chosen parts and their ratings</h4>", parts_table([r for r in ctx.bom if r["sheet"] == sheet]),
                 "<h4>Margins</h4>", margins_table(t, result) or note("this design states no margin as a fraction"),
-                "<h4>How the choice was made</h4>", choice_figures(t, result) or note("every candidate core is "
+                "<h4>How the choice was made</h4>", choice_figures(t, result, ctx.spice_warnings) or note("every candidate core is "
                                                                                    "evaluated: the table above "
                                                                                    "is the choice"),
                 f"<details open><summary>Every result of [{esc(t)}]</summary>{results_table(t, result)}</details>"]
