@@ -185,9 +185,9 @@ def circuits_section(ctx) -> str:
                 f"<p><b>What binds:</b> {esc(str(result.binding))}</p>",
                 "<h4>Chosen parts and their ratings</h4>", parts_table([r for r in ctx.bom if r["sheet"] == sheet]),
                 "<h4>Margins</h4>", margins_table(t, result) or note("this design states no margin as a fraction"),
-                "<h4>How the choice was made</h4>", choice_figures(t, result, ctx.spice_warnings) or note("every candidate core is "
-                                                                                   "evaluated: the table above "
-                                                                                   "is the choice"),
+                "<h4>How the choice was made</h4>",
+                choice_figures(t, result, ctx.spice_warnings) or note("every candidate core is evaluated: the table "
+                                                                      "above is the choice"),
                 f"<details open><summary>Every result of [{esc(t)}]</summary>{results_table(t, result)}</details>"]
     return "".join(out)
 
