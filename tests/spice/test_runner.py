@@ -90,7 +90,11 @@ def test_design_spice_adds_the_simulated_corners(tmp_path):
         sp = r[table]["spice"]
         assert all(f"{k}_equation" in sp for k in keys), table
         assert sp["meets_spec"] and sp["agrees"] and sp["differs"] == [], table
-    assert "warning" not in out.stderr
+    # the converter's one warning: at the top of the supply range its slowest corner switches just under 20 kHz in
+    # SPICE (D1's falling drop against a dump voltage under a volt; tests/spice/test_spice_converter.py holds it)
+    said = [w for w in out.stderr.splitlines() if "warning" in w]
+    assert len(said) == 1 and "[converter]" in said[0] and "20 kHz" in said[0], said
+    assert r["converter"]["spice"]["agrees"] and not r["converter"]["spice"]["meets_spec"]
     # the corner of the filter by hand: 1 / (2 pi sqrt(2 L C)) with the chosen L and C
     assert cd["spice"]["f_corner"] == pytest.approx(1 / (2 * math.pi * math.sqrt(2 * cd["l_out"] * cd["c_out"])), rel=0.01)
 
@@ -182,8 +186,10 @@ def test_confirm_rows_carry_tolerance_reason_kind_and_verdict():
     off = checks.judged("commutation", {**figures, "swing_rpm_min": 1.4, "window_reached": False, "meets_spec": True})
     assert off["differs"] == ["swing_rpm_min"] and checks.warnings("commutation", off) == [
         "SPICE's swing_rpm_min = 1.4 V is outside its tolerance of the design's 1.308 V"]
-    for table in checks.CONFIRM:
-        assert all(kind in ("independent", "sanity") and 0 < rtol <= 0.005 for *_, rtol, _, kind in checks.CONFIRM[table])
+    for table in checks.CONFIRM:  # a tolerance of None: the design check gives one per run ("*_rtol")
+        assert all(kind in ("independent", "sanity") and (rtol is None or 0 < rtol <= 0.005)
+                   for *_, rtol, _, kind in checks.CONFIRM[table])
+    assert all(rtol is None for *_, rtol, _, _ in checks.CONFIRM["converter"])
 
 
 @needs_ngspice

@@ -323,6 +323,8 @@ def design_check(result) -> dict:
             f"{eng(out['f_equation'], 'Hz')} (the circuit's own figures predict {out['f_expected']:+.2%}): t2 is "
             f"{x['t2_deck'] / x['t2_flat'] - 1:+.1%} longer than eq 3's, D1's drop falling with its current against a "
             f"dump voltage V_L+ of only {eng(v_dump, 'V')} at this supply, and t1 {x['t1_deck'] / x['t1_flat'] - 1:+.1%} "
-            "(R1's drop ramps from zero where eq 2 holds it at V12(H); the restart)")
+            "(R1's drop ramps from zero where eq 2 holds it at V12(H); the restart). The design holds this floor "
+            "at exactly 20 kHz by eq 1 to 5 whatever the supply range or spread; an f_min above the "
+            f"{eng(result.f_min_design, 'Hz')} it raised f_min to lifts it")
     out["meets_spec"] = not out["misses"]
     return out
