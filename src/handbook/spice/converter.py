@@ -255,6 +255,11 @@ def draw(ps: tuple[Part, ...]):
 CONTROL_GAP = 0.35  # the dashed control line stops this short of the switch's symbol
 
 
+def _pct(x: float, places: int = 2) -> str:
+    """A signed share as the book writes it: +1.0 %, −0.78 % (a minus sign, a space before the %)."""
+    return f"{x * 100:+.{places}f} %".replace("-", "\N{MINUS SIGN}")
+
+
 def _corner_params(result, supply: float, ends: tuple[int, ...]) -> dict:
     """The deck's parameters with the designed L1 and R1 and the TCA5600 at one corner of the design's box: R1
     +-r1_tolerance, L1 +-a_l_tolerance, V12(H), V_CE(sat) and V_F each +-device_spread (``ends``: -1 or 1 each,
@@ -317,14 +322,16 @@ def design_check(result) -> dict:
     if out["f"] < floor:
         p = _worst(result, supplies_f, "f")
         x, v_dump = exact(p), p["v_out2"] + p["regulator_drop"] + p["v_f"] - p["v_cc2_min"]
+        digits = 6 if out["f"] / floor > 0.999 else 4  # 19.998 kHz, not "20 kHz below 20 kHz"
+        need = math.ceil(result.f_min_design * floor / out["f"] / 100) * 100  # f scales with f_min (L1 as 1/f_min)
         out["misses"].append(
-            f"the full-load frequency at {eng(out['f_supply'], 'V')} and its slow corner, {eng(out['f'], 'Hz')}, is "
-            f"below {name} ({eng(floor, 'Hz')}), {out['f'] / out['f_equation'] - 1:+.2%} against the design's "
-            f"{eng(out['f_equation'], 'Hz')} (the circuit's own figures predict {out['f_expected']:+.2%}): t2 is "
-            f"{x['t2_deck'] / x['t2_flat'] - 1:+.1%} longer than eq 3's, D1's drop falling with its current against a "
-            f"dump voltage V_L+ of only {eng(v_dump, 'V')} at this supply, and t1 {x['t1_deck'] / x['t1_flat'] - 1:+.1%} "
+            f"the full-load frequency at {eng(out['f_supply'], 'V')} and its slow corner, {eng(out['f'], 'Hz', digits)}, is "
+            f"below {name} ({eng(floor, 'Hz')}), {_pct(out['f'] / out['f_equation'] - 1)} against the design's "
+            f"{eng(out['f_equation'], 'Hz')} (the circuit's own figures predict {_pct(out['f_expected'])}): t2 is "
+            f"{_pct(x['t2_deck'] / x['t2_flat'] - 1, 1)} longer than eq 3's, D1's drop falling with its current against a "
+            f"dump voltage V_L+ of only {eng(v_dump, 'V')} at this supply, and t1 {_pct(x['t1_deck'] / x['t1_flat'] - 1, 1)} "
             "(R1's drop ramps from zero where eq 2 holds it at V12(H); the restart). The design holds this floor "
-            "at exactly 20 kHz by eq 1 to 5 whatever the supply range or spread; an f_min above the "
-            f"{eng(result.f_min_design, 'Hz')} it raised f_min to lifts it")
+            f"exactly by eq 1 to 5; f_min = {eng(need, 'Hz')} or more (the {eng(result.f_min_design, 'Hz')} it "
+            f"designed at, times {eng(floor, 'Hz')} over SPICE's figure: L1 scales as 1/f_min) lifts it")
     out["meets_spec"] = not out["misses"]
     return out

@@ -6,9 +6,9 @@ its corners vary.
   between the low and high switching levels) and its swing at ``rpm_max`` (limit ``min_excursion``), over the
   capacitor tolerance and the TDA5144's charge current and two levels; with CAP-ST and CAP-TI chosen (motor
   data, ``flyback_time``) their quantities too (:mod:`.timers`);
-* class_d: the oscillator (limits: the LM4651's 50 .. 225 kHz), the dead time (``dead_time_min``), the output
-  filter's corner (no limit of its own:
-  reported), its Q (``q_max``), the switching residue at the load (``ripple_max``) and THD+N as the analyser
+* class_d: the oscillator (limits: the LM4651's 50 .. 225 kHz), the dead time (``dead_time_min``), the clipping
+  power (``p_out``), the inductor's peak (``i_sat`` / 1.2 and 10 A), the output filter's corner (no limit of its
+  own: reported), its Q (``q_max``), the switching residue at the load (``ripple_max``) and THD+N as the analyser
   reads it (``thd_max``), over R_OSC, R_DLY, L, C_BYP and the oscillator's spread against eq 5;
 * converter: the current the converter delivers at ``v_supply_min`` (limit ``i_out``) and the full-load
   frequency there (limit the spec's ``f_min``) and at its lowest over the supply range (limit 20 kHz with
@@ -23,6 +23,7 @@ import numpy as np
 
 from ...sources.an94002 import circuit as an94002
 from ...sources.lm4651 import circuit as lm4651
+from ..class_d import model as class_d_model
 from . import timers
 from .engine import Measure, Model, Source, combine
 from .limiter import UNIFORM
@@ -108,8 +109,11 @@ def class_d(result) -> Model:
     Model
         Inputs ``r_osc``, ``r_dly`` (ohm, +-``r_tolerance``; R_DLY only where one is fitted), ``osc`` (the
         oscillator's factor on eq 5), ``l``, ``c``; quantities ``f_sw`` (Hz, limits the LM4651's range),
-        ``dead_time`` (s, limit ``dead_time_min``), ``f_corner`` (Hz, no limit), ``q`` (limit ``q_max``), ``ripple`` (V rms, limit
-        ``ripple_max``) and ``thd_n`` (fraction, limit ``thd_max``).
+        ``dead_time`` (s, limit ``dead_time_min``), ``p_clip`` (W, at least ``p_out`` and the test power),
+        ``i_peak`` (A, at most ``i_sat`` / 1.2 and 10 A), ``f_corner`` (Hz, no limit), ``q`` (limit ``q_max``),
+        ``ripple`` (V rms, limit ``ripple_max``) and ``thd_n`` (fraction, limit ``thd_max``). The band's flatness
+        is left to the design's own search over the whole L, C box (its peaking is not monotonic in L and C, so
+        corners would not bound it).
     """
     s, lo, co = result.spec, result.l_out, result.c_out
     rl, vs, rt = s["r_load"], s["supply"], s["r_tolerance"]
@@ -129,7 +133,8 @@ def class_d(result) -> Model:
         fs = lm4651.f_sw_for(r_osc, r_dly) * osc
         return {"f_sw": fs, "dead_time": lm4651.dead_time_total(r_dly) + 0 * osc, "f_corner": lm4651.filter_f0(l, c),
                 "q": lm4651.filter_q(l, c, rl),
-                "ripple": lm4651.ripple_rms(fs, l, c, rl, vs),
+                "ripple": lm4651.ripple_rms(fs, l, c, rl, vs), "p_clip": lm4651.p_clip(fs, rl, vs),
+                "i_peak": lm4651.inductor_peak(fs, l, c, lm4651.v_clip_peak(fs, rl, vs), rl, vs, s["f_audio"]),
                 "thd_n": lm4651.thd_n_measured(fs, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"])}
 
     measures = (Measure("f_sw", "switching frequency", "Hz", lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"],
@@ -139,9 +144,16 @@ def class_d(result) -> Model:
                 Measure("f_corner", "output filter corner", "Hz"),
                 Measure("q", "output filter Q with the load", "1", None, s["q_max"], "q_max"),
                 Measure("ripple", "switching residue at the load, rms", "V", None, s["ripple_max"], "ripple_max"),
+                Measure("p_clip", "clipping power (no clipping at p_out nor at the THD+N test point)", "W",
+                        class_d_model.p_unclipped(s), None, "p_out"),
+                Measure("i_peak", "inductor peak current (audio at clipping plus ripple)", "A", None,
+                        class_d_model.i_peak_limit(s), "i_sat / 1.2, 10 A"),
                 Measure("thd_n", "THD+N at the test point (analyser's band)", "%", None, s["thd_max"], "thd_max"))
     drift = ("The oscillator's spread is eq 5 against the LM4651 table's typicals at 25 C (osc_tol_slow, "
              "osc_tol_fast); the datasheet prints no temperature drift for it.",
+             "The dead time's 27 ns at R_DLY = 0 and its 1.7 ns/kΩ slope are the LM4651 table's typicals (no limits "
+             "printed; eq 4 as printed cannot be used, erratum lm4651-dead-time): only R_DLY's tolerance varies here, "
+             "so a dead-time margin of a few per cent is a margin on the typicals, not on the device.",
              f"C_BYP is film (the BOM's class); L's tolerance l_tolerance = {s['l_tolerance']:.0%} is taken to hold "
              "over temperature; R_DS(on) rises 0.2 %/K (LM4652 table), which the heat sink's corner carries, not "
              "these quantities.")

@@ -15,9 +15,10 @@ LOSSES = {"current_limiter": ("p_r7", "r7_rating", "r7_package", "v_drop", "p_r1
                       "needs_heat_sink", "t_junction_no_sink"),
           "converter": ("core_loss", "winding_loss", "temperature_rise", "saturation_margin", "b_peak_min_area")}
 #: how the section reads its margins and ratings, as MathML (no script typesets it: the browser does)
-MARGIN_MATH = ('<p>A margin is how far the worst corner stays inside its limit, as a fraction of the limit; a part\'s '
-               'rating is used by its worst-case stress:</p><math display="block"><mi>m</mi><mo>=</mo><mfrac><mrow>'
-               '<mo>|</mo><mtext>limit</mtext><mo>&#x2212;</mo><mtext>worst</mtext><mo>|</mo></mrow><mtext>limit</mtext></mfrac><mo>,</mo>'
+MARGIN_MATH = ('<p>A margin is how far the worst corner stays inside its limit, as a fraction of the limit, negative '
+               'where it fails (s = +1 below an upper limit, −1 above a lower one); a part\'s rating is used by its '
+               'worst-case stress:</p><math display="block"><mi>m</mi><mo>=</mo><mi>s</mi><mfrac><mrow>'
+               '<mtext>limit</mtext><mo>&#x2212;</mo><mtext>worst</mtext></mrow><mtext>limit</mtext></mfrac><mo>,</mo>'
                '<mspace width="2em"/><mi>u</mi><mo>=</mo><mfrac><msub><mi>S</mi><mtext>worst</mtext></msub>'
                '<msub><mi>R</mi><mtext>rated</mtext></msub></mfrac></math>')
 #: results shown apart from the results table (what binds, in its own line; warnings in section 7)
@@ -109,22 +110,45 @@ def results_table(t: str, result) -> str:
                                        for o in OUTPUTS[t] if o.key not in APART], (1,))
 
 
+def _eva_margins(t: str, result) -> list[list[str]]:
+    """Every limited quantity of the design's worst-case model at its worst corner (EVA, section 4's): the margin
+    as a fraction of the limit it is nearest (negative where it fails), named with that limit."""
+    from ...design.worstcase import engine, model
+
+    m = model(t, result)
+    eva = engine.corners(m)
+    rows = []
+    for q in m.measures:
+        lo, hi = float(eva[q.key].min()), float(eva[q.key].max())
+        mg = engine.margin(q, lo, hi)
+        if mg is not None:
+            rows.append([esc(readable(q.label)), value(f"{t}.eva_margin.{q.key}", mg, "%"), esc(q.limit_name)])
+    return rows
+
+
 def margins_table(t: str, result) -> str:
-    """The design's margins: its results that are margins (fractions of a limit); the class-D stage's are per
-    check (:data:`~handbook.design.class_d.model.CHECKS`, each at its worst corner), named with what it is held to."""
+    """The design's margins: every limited quantity's at its worst corner (EVA over the worst-case model, the
+    inputs section 4 lists), then the margins the design itself states that are not among them; the class-D
+    stage's are its own checks (:data:`~handbook.design.class_d.model.CHECKS`, each at its worst corner, which
+    section 4's model follows; the heat sink's only where one is given: else it is sized, with no margin)."""
     if t == "class_d":
         from ...design.class_d.explain import SHOW
         from ...design.class_d.model import CHECKS
 
         held = {"oscillator range": "the LM4651's 50 kHz .. 225 kHz", "dead time": "dead_time_min",
-                "inductor peak": "i_sat / 1.2 and the LM4651's 10 A limit"}
+                "inductor peak": "i_sat / 1.2 and the LM4651's 10 A limit", "clipping": "p_out",
+                "audio band": "droop_max"}
         m = result.figures["margins"]
-        return table(["check (worst corner)", "margin", "held to"],
-                     [[esc(k), value(f"{t}.margin.{k}", float(m[k]), "%"),
-                       esc(held.get(k) or SHOW.get(k, ("", "", "", ""))[3] or "")] for k in CHECKS], (1,))
-    rows = [[esc(o.label), value(f"{t}.{o.key}", getattr(result, o.key), o.unit)]
-            for o in OUTPUTS[t] if "margin" in o.key and o.unit == "%"]
-    return table(["margin", "value"], rows, (1,)) if rows else ""
+        given = result.spec["theta_sa_available"] is not None  # else the heat sink is sized: no margin to state
+        rows = [[esc(k), value(f"{t}.margin.{k}", float(m[k]), "%"), esc(held.get(k) or SHOW.get(k, ("", "", "", ""))[3] or "")]
+                for k in CHECKS if k != "heat sink" or given]
+    else:
+        rows = _eva_margins(t, result)
+        shown = [float(r[1].split('"')[1]) for r in rows]  # the <data value="..."> of each
+        rows += [[esc(readable(o.label)), value(f"{t}.{o.key}", getattr(result, o.key), o.unit), "the design's own"]
+                 for o in OUTPUTS[t] if "margin" in o.key and o.unit == "%"
+                 and not any(abs(getattr(result, o.key) - v) < 1e-9 for v in shown)]
+    return table(["margin (at the worst corner)", "value", "held to"], rows, (1,)) if rows else ""
 
 
 def _figures(t: str, result) -> list[tuple[object, str]]:
