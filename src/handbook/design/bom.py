@@ -207,7 +207,10 @@ def class_d_rows(cd) -> list[dict]:
     list of dict
         The rows (keys :data:`COLUMNS`).
     """
+    from .class_d import model
+
     sheet, s, fig = SHEETS["class_d"][0], cd.spec, cd.figures
+    p_set = min((float(model.heat(s, f)[0]), float(model.heat(s, f)[2])) for f in (cd.f_sw_min, cd.f_sw_max))[1]
     t_a = s["t_ambient"]
     i_peak = float(fig["i_peak"])
     i_sat = ratings.SATURATION_MARGIN * i_peak
@@ -229,7 +232,7 @@ def class_d_rows(cd) -> list[dict]:
              current=i_sat, stress=i_peak, technology="powder or gapped ferrite core, low-loss at the switching "
              "frequency", package="power inductor",
              rating_text=f"saturation ≥ {eng(i_sat, 'A')} (1.2 × the worst peak {eng(i_peak, 'A')}, audio plus "
-                         f"ripple at clipping; the design held it so for i_sat = {eng(s['i_sat'], 'A')}; a shorted "
+                         f"ripple at clipping; the design held the peak to i_sat = {eng(s['i_sat'], 'A')} over 1.2; a shorted "
                          f"output reaches the LM4651's 10 A limit first); rms ≥ "
                          f"{eng(i_rms, 'A')} at the thermal basis; DCR ≤ {eng(s['l_dcr'] * cd.l_out, 'Ω')}",
              reason=f"{s['l_series']} value; the filter's corner {eng(cd.f_corner, 'Hz')}"),
@@ -240,8 +243,11 @@ def class_d_rows(cd) -> list[dict]:
                          "it, 50 % derating",
              reason=f"{s['c_series']} value; across the load"),
         _row(sheet, "HS1", "LM4652 heat sink", f"≤ {cd.theta_sa_required:.3g} K/W", "K/W",
-             rating_text=f"θ_SA at most {cd.theta_sa_required:.3g} K/W carrying {eng(cd.p_dissipation, 'W')} at "
-                         f"{t_a:g} °C ambient",
+             rating_text=f"θ_SA at most {cd.theta_sa_required:.3g} K/W: the LM4652 dissipating {eng(p_set, 'W')} at "
+                         f"the oscillator corner that sets it, T_j {model.DEV['tj_max'] - s['tj_margin']:g} °C, "
+                         f"{t_a:g} °C ambient" + ("" if s["theta_sa_available"] is None else
+                                                  f"; the {s['theta_sa_available']:g} K/W given holds T_j at "
+                                                  f"{cd.t_junction:.4g} °C"),
              stress=cd.p_dissipation, technology="extruded aluminium, with thermal grease (θ_CS "
              f"{s['theta_cs']:g} K/W)", package="TO-220 mount",
              reason=f"sized at {cd.thermal_basis}: {eng(cd.p_thermal, 'W')} of output"),

@@ -62,9 +62,10 @@ class ClassDResult(Result):
     efficiency: float = reported('%', 'efficiency at p_out')
     thermal_basis: str = reported('', 'heat sink sized at')
     p_thermal: float = reported('W', 'output power the heat sink carries (its thermal basis)')
-    p_dissipation: float = reported('W', 'LM4652 dissipation (corner setting the heat sink)')
+    p_dissipation: float = reported('W', 'LM4652 dissipation at the hotter oscillator corner, with the heat sink used')
     theta_sa_required: float = reported('K/W', 'heat sink needed')
-    t_junction: float = reported('C', 'T_j with the heat sink (the one needed: 150 C - tj_margin by construction)')
+    t_junction: float = reported('C', 'T_j with the heat sink used (the one given, else the one needed: then 150 °C '
+                                      '- tj_margin by construction)')
     needs_heat_sink: bool = reported('', 'needs a heat sink (theta_JA alone passes the 150 C shutdown)')
     t_junction_no_sink: float | None = reported('C', 'T_j with no heat sink, theta_JA alone (none: past the shutdown)')
     audio_band: str = reported('', 'audio band')

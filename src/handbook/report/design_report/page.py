@@ -50,7 +50,7 @@ h3 { font-size: 17px; margin-top: 22px; }
   footer.trace { display: none; }
   details::details-content { content-visibility: visible !important; display: block !important; }
   h2, h3, h4 { break-after: avoid; } figure, tr { break-inside: avoid; }
-  table { font-size: 8.5pt; } .scroll { overflow: visible; }
+  table { font-size: 8.5pt; } .scroll, .calc-math { overflow: visible; }
 }
 """
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from ...core.units import readable
 from ...design.bom import SHEETS
+from ...design.ratings import SATURATION_MARGIN
 from ...design.schema import TABLES
 from ...design.spec import OUTPUTS
 from .page import esc, inline_svg, note, table, value
@@ -65,7 +66,10 @@ def _rating_use(r: dict) -> str:
     rating = next((r[k] for k in ("power_rating", "voltage_rating", "current_rating") if r[k]), None)
     if rating is None or r["stress"] is None:
         return ""
-    return f"{r['stress'] / rating:.1%}".replace("%", " %")
+    share = f"{r['stress'] / rating:.1%}".replace("%", " %")
+    if r["current_rating"] and abs(r["stress"] * SATURATION_MARGIN / rating - 1) < 1e-9:  # the rule, not a part
+        return f"{share} (the 1.2 saturation margin: the rating asked is the peak × 1.2)"
+    return share
 
 
 def parts_table(rows: list[dict]) -> str:
@@ -106,7 +110,7 @@ def _schematic(t: str, result, warned: list | None = None) -> str:
 
 def results_table(t: str, result) -> str:
     """Every result the design reports (label, value with unit), :data:`~handbook.design.spec.OUTPUTS`' order."""
-    return table(["result", "value"], [[esc(o.label), value(f"{t}.{o.key}", getattr(result, o.key), o.unit)]
+    return table(["result", "value"], [[esc(readable(o.label)), value(f"{t}.{o.key}", getattr(result, o.key), o.unit)]
                                        for o in OUTPUTS[t] if o.key not in APART], (1,))
 
 
@@ -227,7 +231,7 @@ def losses_section(ctx) -> str:
             out.append(note("the timing capacitors carry no loss worth stating (pin currents of microamps)"))
             continue
         units = {o.key: o for o in OUTPUTS[t]}
-        rows = [[esc(units[k].label), value(f"{t}.{k}", getattr(result, k), units[k].unit)] for k in keys]
+        rows = [[esc(readable(units[k].label)), value(f"{t}.{k}", getattr(result, k), units[k].unit)] for k in keys]
         if "t_ambient" in result.spec:
             rows.insert(0, ["ambient (spec)", value(f"spec.{t}.t_ambient", result.spec["t_ambient"], "C")])
         out.append(table(["loss or temperature", "value"], rows, (1,)))

@@ -47,7 +47,7 @@ def _axes(xlabel: str, ylabel: str, xunit: str, yunit: str, xlog: bool = False):
     return fig, ax
 
 
-def _class_d(result) -> str:
+def _class_d(result, warned: list | None = None) -> str:
     from ...spice import class_d
 
     s = result.spec
@@ -62,7 +62,7 @@ def _class_d(result) -> str:
                       "load (ngspice AC run).")
 
 
-def _converter(result) -> str:
+def _converter(result, warned: list | None = None) -> str:
     from ...design.converter import source_params
     from ...spice import converter
 
@@ -77,7 +77,7 @@ def _converter(result) -> str:
                       "R1 as bought, at the spec's lowest supply (ngspice transient).")
 
 
-def _limiter(result) -> str:
+def _limiter(result, warned: list | None = None) -> str:
     from ...spice import designed, limiter
 
     w = limiter.waveforms(designed.circuit("current_limiter", result), {"i": "i(VAM)", "out": "v(out)"})
@@ -93,7 +93,7 @@ def _limiter(result) -> str:
                       "nominal parts (ngspice transient); the band is the design's trip over every corner.")
 
 
-def _limiter_step(result) -> str:
+def _limiter_step(result, warned: list | None = None) -> str:
     from ...spice import designed
     from ...spice.limiter import transient
 
@@ -108,13 +108,18 @@ def _limiter_step(result) -> str:
         ax.annotate(lab, (t[-1], x), fontsize=7, xytext=(-2, -9), textcoords="offset points", ha="right")
     ax.legend(fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2, frameon=False)
     settle = "does not settle within the run" if w["settling"] is None else f"settles within 5 % in {eng(w['settling'], 's')}"
+    if w["peak"] > s["i_must_trip"] and warned is not None:
+        warned.append(("current_limiter", f"SPICE: a running motor that stalls peaks at {eng(w['peak'], 'A')} before the "
+                       f"limiter settles, above i_must_trip = {eng(s['i_must_trip'], 'A')} "
+                       f"({w['overshoot_rel'] * 100:+.0f} % over the nominal trip): check the driver's and the "
+                       "motor's peak ratings, or slow the loop (section 5)"))
     return figure_svg(fig, "sim-limiter-step", "A running motor that stalls (its back-EMF falls to zero in 1 µs) at the "
                       f"lowest supply, nominal parts, the limiter closed through the speed loop as AN94002's chapter "
                       f"reads figure 3: the current peaks at {eng(w['peak'], 'A')} ({w['overshoot_rel'] * 100:+.0f} % over the "
                       f"trip) and {settle} (ngspice transient; the closure, T2 and the windings as the book assumes).")
 
 
-def _commutation(result) -> str:
+def _commutation(result, warned: list | None = None) -> str:
     from ...spice import commutation_cycle
 
     s = result.spec
@@ -170,7 +175,7 @@ def section(ctx) -> str:
             else:
                 out.append(note("no corner confirmation for this circuit (SPICE checks its equations in the book); "
                                 "its waveform below is simulated with the designed parts"))
-            out += [wave(result) for wave in WAVES.get(t, ())]
+            out += [wave(result, ctx.spice_warnings) for wave in WAVES.get(t, ())]
         except (checks.SpiceError, checks.SpiceUnavailable) as exc:
             out.append(note(f"SPICE run failed: {exc}"))
             ctx.spice_warnings.append((t, f"SPICE run failed, the design is not confirmed by simulation: {exc}"))

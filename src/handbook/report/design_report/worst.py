@@ -64,9 +64,9 @@ def histogram(t: str, q, samples) -> str:
         ax.axvline(v * scale, color="0.4", ls=":", lw=1, label="EVA" if k == 0 else None)
     for k, v in enumerate(b for b in (q.limit_low, q.limit_high) if b is not None):
         ax.axvline(v * scale, color="#c0392b", ls="--", lw=1.2, label="limit" if k == 0 else None)
-    ax.set_xlabel(q.label[:70])
+    ax.set_xlabel(q.label[:70] + (" (%)" if unit == "%" else ""))
     ax.set_ylabel("samples")
-    if unit != "%":
+    if unit not in ("%", "1", ""):  # a pure number takes no SI prefix ("300 m1")
         format_axis(ax, "x", unit)
     ax.legend(fontsize=7, loc="upper right")
     return figure_svg(fig, f"wc-{t}-{q.key}", f"{q.label}: {len(x):,} Monte Carlo samples")
