@@ -202,14 +202,14 @@ def class_d(r) -> list:
               f"({_at(C_DEAD * 1e3, 's')}/kΩ × (1 − {_pct(s['r_tolerance'])})), the LM4651 table's dead time at "
               f"R_DLY = 0 plus eq 4's slope, met at R_DLY's low tolerance end: {_at(r.r_dly, 'Ω')}",
               (r.r_dly, "Ω"), f"{here}: {s['r_dly_series']} series pick; LM4651/LM4652 "
-              "table and eq (4)"),
+              "table and eq (4)", errata=("lm4651-dead-time",)),
         words(f"IPOPT, then a proven series search over {s['r_osc_series']} R_OSC, {s['l_series']} L and "
               f"{s['c_series']} C_BYP at the worst of the tolerance corners: R_OSC = {_at(r.r_osc, 'Ω')}, "
               f"L = {_at(r.l_out, 'H')}, C_BYP = {_at(r.c_out, 'F')}", (r.r_osc, "Ω"),
               f"{here}: continuous optimum snapped to the series (search)"),
         equation_step(f"Switching frequency, R_OSC less 0.4 R_DLY ({_at(r.r_osc, 'Ω')} − 0.4 · "
                       f"{_at(r.r_dly, 'Ω')})", "lm4651-eq5",
-                      {r"\{R_{OSC}\}_{\Omega}": (r_eff, "1")}, (r.f_sw, "Hz")),
+                      {r"\{R_{OSC}\}_{\Omega}": (r_eff, "1")}, (r.f_sw, "Hz"), errata=("lm4651-f-15k", "lm4651-rosc")),
         words(f"Oscillator corners (−{_pct(s['osc_tol_slow'])}, +{_pct(s['osc_tol_fast'])}, eq 5 against the "
               f"datasheet's table, with R_OSC and R_DLY each ±{_pct(s['r_tolerance'])}): "
               f"{_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}",

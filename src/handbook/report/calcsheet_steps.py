@@ -95,6 +95,26 @@ def _errata_rows(src) -> tuple:
     return tuple(rows)
 
 
+def errata_named(ids: tuple) -> tuple:
+    """The registered errata of the given ids, one line each as :func:`errata_of` writes them: for a step that
+    rests on a figure an erratum of its source disputes, though not at an equation number.
+
+    Parameters
+    ----------
+    ids : tuple of str
+        Erratum ids ("lm4651-dead-time").
+
+    Returns
+    -------
+    tuple of str
+        One line per id found, "id: what is wrong", in the order given.
+    """
+    from ..sources import SOURCES
+
+    rows = {ident: line for s in SOURCES for ident, _where, line in _errata_rows(s)}
+    return tuple(rows[i] for i in ids if i in rows)
+
+
 def errata_of(e) -> tuple:
     """Every registered erratum of the record ``e``: the record itself where its printed form is wrong, and each
     erratum of its source document made at its equation number.
@@ -189,7 +209,8 @@ def _symbol(expr, lhs, name: str):
     raise KeyError(f"no symbol {name!r} in {expr}")
 
 
-def equation_step(title: str, eq_id: str, values: dict, result: tuple, solve_for: str | None = None) -> Step:
+def equation_step(title: str, eq_id: str, values: dict, result: tuple, solve_for: str | None = None,
+                  errata: tuple = ()) -> Step:
     """A step from the registry record ``eq_id``: its derived form (an empirical record: its printed form),
     optionally solved for one symbol, with ``values`` substituted.
 
@@ -206,6 +227,8 @@ def equation_step(title: str, eq_id: str, values: dict, result: tuple, solve_for
         (the design's value, SI; its unit): what the step gives.
     solve_for : str or None
         Solve the record for this symbol's name (the left side becomes the right's unknown).
+    errata : tuple of str
+        Ids of further errata the step rests on (:func:`errata_named`), beside the record's own.
 
     Returns
     -------
@@ -233,7 +256,7 @@ def equation_step(title: str, eq_id: str, values: dict, result: tuple, solve_for
     subst = {names[n]: shown(*values[n])[0] for n in names}
     substituted = f"{lhs_tex} {rel} {sp.latex(expr, symbol_names=subst, mul_symbol='dot')}"
     return Step(f"{title} ({e.title}, {form})", symbols_tex, substituted, shown(*result)[1], e.source,
-                errata_of(e))
+                tuple(dict.fromkeys(errata_of(e) + errata_named(errata))))
 
 
 def _latex(expr) -> str:
@@ -248,7 +271,7 @@ def _solved(equation, unknown):
     return (positive or sols)[0]
 
 
-def words(title: str, result: tuple, source: str) -> Step:
+def words(title: str, result: tuple, source: str, errata: tuple = ()) -> Step:
     """A step in words: a number the design takes from no registry equation (a search, a series pick, a rating).
 
     Parameters
@@ -259,14 +282,16 @@ def words(title: str, result: tuple, source: str) -> Step:
         (the value, SI; its unit as :func:`shown` takes it), or (text, "") for a result that is not a number.
     source : str
         What the number rests on (the design module, a datasheet).
+    errata : tuple of str
+        Ids of the registered errata the number rests on (:func:`errata_named`).
 
     Returns
     -------
     Step
-        A step with no equation (``symbols_tex`` and ``substituted_tex`` empty) and no errata.
+        A step with no equation (``symbols_tex`` and ``substituted_tex`` empty).
     """
     value, unit = result
     text = value if isinstance(value, str) else shown(value, unit)[1]
-    return Step(title, "", "", text, source, ())
+    return Step(title, "", "", text, source, errata_named(errata))
 
 
