@@ -69,8 +69,8 @@ _READABLE = ((re.compile(r"(\d)\s?u([FAHVWsm]|Ohm)\b"), "\\1 µ\\2"), (re.compil
              (re.compile(r"(\d)\s?Mohm\b"), "\\1 MΩ"), (re.compile(r"(\d)\s?mOhm\b"), "\\1 mΩ"),
              (re.compile(r"(\d)\s?ohm\b"), "\\1 Ω"), (re.compile(r"\+-\s?"), "±"), (re.compile(r"µOhm"), "µΩ"),
              (re.compile(r"([/*])u([FAH])\b"), "\\1µ\\2"), (re.compile(r"(\d)\s?deg\b"), "\\1°"),
-             (re.compile(r"mm\^2"), "mm²"), (re.compile(r"mm\^3"), "mm³"), (re.compile(r"(\d) C\b"), "\\1 °C"),
-             (re.compile(r" <= "), " ≤ "), (re.compile(r" >= "), " ≥ "), (re.compile(r"\bm\^2\b"), "m²"))
+             (re.compile(r"mm\^2"), "mm²"), (re.compile(r"mm\^3"), "mm³"), (re.compile(r"(\d) C\b(?![/ ]?\d|/)"), "\\1 °C"),
+             (re.compile(r"\bm\^2\b"), "m²"))
 
 
 def readable(text: str) -> str:
