@@ -271,3 +271,18 @@ def test_rss_lies_inside_the_extreme_values(table):
     for q in analysed(table).quantities:
         assert q.eva_low - 1e-12 * abs(q.eva_low) <= q.rss_low <= q.nominal <= q.rss_high
         assert q.rss_high <= q.eva_high + 1e-12 * abs(q.eva_high), q.key
+
+
+def test_r1_drift_at_the_weak_corner_by_hand():
+    """The default converter at 85 C: R1 (1.74 ohm, +1 % tolerance) rises another 100 ppm/K x 60 K = 0.6 %; at the
+    weak corner (V12(H) 0.36 V, V_L- 7.09 V, V_L+ 7.38 V, from eq 1 and 2 at 8 V) the current delivered is then
+    0.36 / (1.74 x 1.016) / 2 x 7.09 / 14.47, below the 50 mA asked: the report warns."""
+    from handbook.design.worstcase.models import r1_drift, r1_drift_sentence
+
+    cv = converter.design()
+    d, i_hot = r1_drift(cv)
+    assert d == pytest.approx(0.006)
+    assert i_hot == pytest.approx(0.36 / (1.74 * 1.016) / 2 * 7.09 / (7.09 + 7.38), rel=1e-3) and i_hot < 0.05
+    assert "below i_out = 50 mA" in r1_drift_sentence(cv)
+    cold = converter.design({"t_ambient": 25.0})
+    assert r1_drift(cold) == (0.0, pytest.approx(cold.i_out_least)) and "still at least" in r1_drift_sentence(cold)

@@ -160,6 +160,44 @@ def class_d(result) -> Model:
     return Model(srcs, measures, f, drift)
 
 
+#: R1's temperature coefficient at most, 1/K: the BOM's metal film (<= 100 ppm/K)
+R1_TC = 100e-6
+
+
+def r1_drift(result) -> tuple[float, float]:
+    """What R1's temperature drift does to the converter's weakest corner, which the design takes at R1's tolerance
+    alone: (R1's rise at t_ambient, a fraction: :data:`R1_TC` x (t_ambient - 25 C); the current delivered at the
+    weak corner with R1 risen by it too, A). The current is V12(H)/R1 times a factor R1 does not enter (eq 1, 2
+    and 5), so it scales as 1/R1 exactly.
+
+    Parameters
+    ----------
+    result : ConverterResult
+        A designed converter; ``i_out_least`` and the checked spec are read.
+
+    Returns
+    -------
+    tuple of float
+        (the drift, a fraction; the current delivered, A).
+    """
+    s = result.spec
+    d = max(0.0, R1_TC * (s["t_ambient"] - 25.0))
+    return d, result.i_out_least * (1 + s["r1_tolerance"]) / (1 + s["r1_tolerance"] + d)
+
+
+def r1_drift_sentence(result) -> str:
+    """The drift sentence of R1 (:func:`r1_drift`) as the report's section 4 states it."""
+    s = result.spec
+    d, i_hot = r1_drift(result)
+    text = (f"R1 (the BOM's metal film, at most 100 ppm/K) rises up to {d * 100:.2f} % by t_ambient = "
+            f"{s['t_ambient']:g} C, beyond the {s['r1_tolerance'] * 100:g} % tolerance the design's corners take: at "
+            f"the weak corner the current delivered falls from {result.i_out_least * 1e3:.2f} mA to {i_hot * 1e3:.2f} mA")
+    if i_hot < s["i_out"]:
+        return text + (f", below i_out = {s['i_out'] * 1e3:.4g} mA: a 25 ppm/K part, or R1 one series step lower, "
+                       "keeps it")
+    return text + f", still at least i_out = {s['i_out'] * 1e3:.4g} mA."
+
+
 def converter(result) -> Model:
     """The operating-point model of a designed TCA5600 converter.
 
@@ -211,8 +249,7 @@ def converter(result) -> Model:
     drift = (f"A_L's temperature drift is taken inside a_l_tolerance = {s['a_l_tolerance']:.0%} (the schema's "
              "assumption for a gap ground to order); the core's saturation, which does drift, is judged by the design "
              "at t_ambient + the coil's rise (the material's 25 C and 100 C figures, PyOpenMagnetics' database).",
-             "R1 (the BOM's metal film, <= 100 ppm/K) drifts 0.5 % over 50 K, half its 1 % tolerance: not in the "
-             "analysis.",
+             r1_drift_sentence(result),
              "V12(H), V_CE(sat) and V_F have no public figures, nor temperature coefficients (the TCA5600 chapter's "
              f"reading note): the assumed +-{spread:.0%} (device_spread) stands for spread and drift together.")
     return Model(srcs, measures, f, drift)
