@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from ..core.units import eng
+from ..core.units import eng, readable
 
 
 @dataclass(frozen=True)
@@ -87,11 +87,11 @@ def _errata_rows(src) -> tuple:
     by_id = {c.id: c for c in src.claims()}
     for r in src.evaluate():
         if r["status"] in ("misprint", "inconsistent", "wrong method") and not by_id[r["id"]].same_fact:
-            line = f"{r['id']}: {r['quantity']} printed {r['printed_text']} ({r['status']}: {r['reason']})"
+            line = readable(f"{r['id']}: {r['quantity']} printed {r['printed_text']} ({r['status']}: {r['reason']})")
             rows.append((r["id"], (r["source"], *places(r["id"])), line))
     for t in src.errata:
         if not t.same_fact:
-            rows.append((t.id, (t.source, *places(t.id)), f"{t.id}: {t.what}"))
+            rows.append((t.id, (t.source, *places(t.id)), readable(f"{t.id}: {t.what}")))
     return tuple(rows)
 
 

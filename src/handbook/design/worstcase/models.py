@@ -177,18 +177,22 @@ def r1_drift(result) -> tuple[float, float]:
 
     Returns
     -------
-    tuple of float
-        (the drift, a fraction; the current delivered, A).
+    tuple
+        (the drift, a fraction; the current delivered, A, or None for a result without ``i_out_least``).
     """
     s = result.spec
     d = max(0.0, R1_TC * (s["t_ambient"] - 25.0))
-    return d, result.i_out_least * (1 + s["r1_tolerance"]) / (1 + s["r1_tolerance"] + d)
+    least = getattr(result, "i_out_least", None)  # None: a stand-in result that carries no weak-corner figure
+    return d, None if least is None else least * (1 + s["r1_tolerance"]) / (1 + s["r1_tolerance"] + d)
 
 
 def r1_drift_sentence(result) -> str:
     """The drift sentence of R1 (:func:`r1_drift`) as the report's section 4 states it."""
     s = result.spec
     d, i_hot = r1_drift(result)
+    if i_hot is None:
+        return (f"R1 (the BOM's metal film, at most 100 ppm/K) rises up to {d * 100:.2f} % by t_ambient = "
+                f"{s['t_ambient']:g} C, beyond the {s['r1_tolerance'] * 100:g} % tolerance the design's corners take.")
     text = (f"R1 (the BOM's metal film, at most 100 ppm/K) rises up to {d * 100:.2f} % by t_ambient = "
             f"{s['t_ambient']:g} C, beyond the {s['r1_tolerance'] * 100:g} % tolerance the design's corners take: at "
             f"the weak corner the current delivered falls from {result.i_out_least * 1e3:.2f} mA to {i_hot * 1e3:.2f} mA")

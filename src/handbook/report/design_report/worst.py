@@ -171,7 +171,7 @@ def section(ctx, analyse=None) -> str:
             from ...design.worstcase.models import r1_drift
 
             d, i_hot = r1_drift(result)
-            if i_hot < result.spec["i_out"]:
+            if i_hot is not None and i_hot < result.spec["i_out"]:
                 ctx.spice_warnings.append((t, f"worst case: R1's drift at t_ambient (+{d * 100:.2f} %) takes the "
                                               f"current delivered at the weak corner to {i_hot * 1e3:.2f} mA, below i_out "
                                               "(section 4, drift)"))
