@@ -187,7 +187,19 @@ def r1_drift(result) -> tuple[float, float]:
 
 
 def r1_drift_sentence(result) -> str:
-    """The drift sentence of R1 (:func:`r1_drift`) as the report's section 4 states it."""
+    """The drift sentence of R1 (:func:`r1_drift`) as the report's section 4 states it.
+
+    Parameters
+    ----------
+    result : ConverterResult
+        A designed converter (a stand-in without ``i_out_least`` gets the drift alone).
+
+    Returns
+    -------
+    str
+        The sentence: R1's rise at t_ambient, the weak corner's current with it, and what keeps it at i_out when
+        it falls below.
+    """
     s = result.spec
     d, i_hot = r1_drift(result)
     if i_hot is None:
