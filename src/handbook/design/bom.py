@@ -210,7 +210,7 @@ def class_d_rows(cd) -> list[dict]:
     from .class_d import model
 
     sheet, s, fig = SHEETS["class_d"][0], cd.spec, cd.figures
-    p_set = min((float(model.heat(s, f)[0]), float(model.heat(s, f)[2])) for f in (cd.f_sw_min, cd.f_sw_max))[1]
+    _, p_set = model.heat_corner(s, cd.f_sw_min, cd.f_sw_max)
     t_a = s["t_ambient"]
     i_peak = float(fig["i_peak"])
     i_sat = ratings.SATURATION_MARGIN * i_peak

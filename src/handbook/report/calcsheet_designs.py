@@ -187,6 +187,7 @@ def class_d(r) -> list:
     list of Step
         The steps, R_DLY first.
     """
+    from ..design.class_d import model
     from ..sources.lm4651.circuit import C_DEAD, DEVICE, T_DEAD_0
 
     s = r.spec
@@ -194,7 +195,7 @@ def class_d(r) -> list:
     t_target = DEVICE["tj_max"] - s["tj_margin"]
     theta_jc = DEVICE["theta_jc"][s["package"]]
     r_eff = r.r_osc - 0.4 * r.r_dly
-    f_set, p_set = _heat_corner(s, r)
+    f_set, p_set = model.heat_corner(s, r.f_sw_min, r.f_sw_max)  # the corner and dissipation eq 11 is taken at
     fitted = ("the one needed" if s["theta_sa_available"] is None else
               f"θ_SA = {s['theta_sa_available']:g} K/W available")
     return [
@@ -226,15 +227,6 @@ def class_d(r) -> list:
         words(f"With the heat sink fitted ({fitted}) the hotter corner runs at T_j = {r.t_junction:.4g} °C and "
               f"dissipates {_at(r.p_dissipation, 'W')}", (r.p_dissipation, "W"), f"{here}: thermal model (model.thermal)"),
     ]
-
-
-def _heat_corner(s, r) -> tuple[float, float]:
-    """(the oscillator corner whose heat sink need is the smaller, Hz; the LM4652's dissipation there with T_j at
-    150 C - tj_margin, W): the corner and dissipation eq 11 is taken at (model.thermal)."""
-    from ..design.class_d import model
-
-    need, f = min((float(model.heat(s, f)[0]), f) for f in (r.f_sw_min, r.f_sw_max))
-    return f, float(model.heat(s, f)[2])
 
 
 # ----------------------------------------------------------------------------------------------

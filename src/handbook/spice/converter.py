@@ -275,9 +275,10 @@ def _corner_params(result, supply: float, ends: tuple[int, ...]) -> dict:
     return p
 
 
-def _worst(result, supplies, key: str) -> dict:
+def _worst(result, supplies, key: str) -> tuple[dict, dict]:
     """The corner (of 32, at each supply) where the deck's own exact figures (:func:`exact`: its KVL with the
-    restart and D1's falling drop, not the design's equations) give the least ``key``."""
+    restart and D1's falling drop, not the design's equations) give the least ``key``: (its parameters, its exact
+    figures)."""
     import itertools
 
     best = None
@@ -286,10 +287,10 @@ def _worst(result, supplies, key: str) -> dict:
             p = _corner_params(result, v, ends)
             if p["v_out2"] + p["regulator_drop"] + p["v_f"] <= v:  # no dump: the coil cannot discharge into C2
                 continue
-            x = exact(p)[f"{key}_deck"]
-            if best is None or x < best[0]:
-                best = (x, p)
-    return best[1]
+            x = exact(p)
+            if best is None or x[f"{key}_deck"] < best[1][f"{key}_deck"]:
+                best = (p, x)
+    return best
 
 
 def design_check(result) -> dict:
@@ -309,9 +310,10 @@ def design_check(result) -> dict:
     lowest = result.f_sw_min if avoid else float(engine.corners(models.converter(result))["f_sw_vmin"].min())
     out = {"corners": 2, "corners_searched": 32 * (3 if avoid else 2)}
     supplies_f = (s["v_supply_min"], s["v_supply_max"]) if avoid else (s["v_supply_min"],)
+    at = {}  # key -> (the corner's parameters, its exact figures)
     for key, eq, supplies in (("i_out", result.i_out_least, (s["v_supply_min"],)), ("f", lowest, supplies_f)):
-        p = _worst(result, supplies, key)
-        got, e, x = run(circuit(p).netlist), expected(p), exact(p)
+        p, x = at[key] = _worst(result, supplies, key)
+        got, e = run(circuit(p).netlist), expected(p)
         h = 1 / e["f"] / STEPS_PER_PERIOD
         rtol = 2 * h / e["t2"] + 2 * h * e["f"] if key == "i_out" else 2 * h * e["f"]
         out |= {key: got[key], f"{key}_equation": eq, f"{key}_expected": x[f"{key}_deck"] / eq - 1,
@@ -320,8 +322,8 @@ def design_check(result) -> dict:
     out["misses"] = ([f"the current into C2 at v_supply_min, {eng(out['i_out'], 'A')}, is below i_out = "
                       f"{eng(s['i_out'], 'A')}"] if out["i_out"] < s["i_out"] else [])
     if out["f"] < floor:
-        p = _worst(result, supplies_f, "f")
-        x, v_dump = exact(p), p["v_out2"] + p["regulator_drop"] + p["v_f"] - p["v_cc2_min"]
+        p, x = at["f"]
+        v_dump = p["v_out2"] + p["regulator_drop"] + p["v_f"] - p["v_cc2_min"]
         digits = 6 if out["f"] / floor > 0.999 else 4  # 19.998 kHz, not "20 kHz below 20 kHz"
         need = math.ceil(result.f_min_design * floor / out["f"] / 100) * 100  # f scales with f_min (L1 as 1/f_min)
         out["misses"].append(

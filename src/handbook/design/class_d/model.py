@@ -274,6 +274,26 @@ def p_unclipped(s: dict) -> float:
     return max(s["p_out"], s["thd_test_power"])
 
 
+def heat_corner(s: dict, f_slow: float, f_fast: float) -> tuple[float, float]:
+    """The oscillator corner that sets the heat sink (the one whose need is the smaller; the slow one on a tie) and
+    the LM4652's dissipation there with T_j at 150 C - ``tj_margin``.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    f_slow, f_fast : float
+        The oscillator's slow and fast corners, Hz.
+
+    Returns
+    -------
+    tuple of float
+        (that corner's frequency, Hz; the dissipation, W).
+    """
+    (need_slow, _, p_slow), (need_fast, _, p_fast) = heat(s, f_slow), heat(s, f_fast)
+    return (f_slow, float(p_slow)) if need_slow <= need_fast else (f_fast, float(p_fast))
+
+
 def thermal(s: dict, f_slow, f_fast):
     """(theta_SA needed, T_j, dissipation, T_j with no heat sink), the last three at the hotter oscillator
     corner. The heat sink is the one given, else the one needed: the smaller need of the two corners,

@@ -390,7 +390,7 @@ def design(spec: dict | None = None) -> ClassDResult:
     above = fig["f_sw_min"] >= s["thd_bandwidth"]
     sol = next((x for x in sols if ("analyser band" in x.names) == above), sols[0])
     f_slow, f_fast = fig["f_sw_min"], fig["f_sw_max"]
-    f_set = f_slow if model.heat(s, f_slow)[0] <= model.heat(s, f_fast)[0] else f_fast  # the corner that sets it
+    f_set, _ = model.heat_corner(s, f_slow, f_fast)
     p_thermal = float(model.thermal_power(s, f_set))
     hot = bool(fig["t_junction_no_sink"] > DEV["tj_max"])
     return ClassDResult(

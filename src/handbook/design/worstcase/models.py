@@ -202,12 +202,12 @@ def r1_drift_sentence(result) -> str:
     """
     s = result.spec
     d, i_hot = r1_drift(result)
-    if i_hot is None:
-        return (f"R1 (the BOM's metal film, at most 100 ppm/K) rises up to {d * 100:.2f} % by t_ambient = "
-                f"{s['t_ambient']:g} C, beyond the {s['r1_tolerance'] * 100:g} % tolerance the design's corners take.")
     text = (f"R1 (the BOM's metal film, at most 100 ppm/K) rises up to {d * 100:.2f} % by t_ambient = "
-            f"{s['t_ambient']:g} C, beyond the {s['r1_tolerance'] * 100:g} % tolerance the design's corners take: at "
-            f"the weak corner the current delivered falls from {result.i_out_least * 1e3:.2f} mA to {i_hot * 1e3:.2f} mA")
+            f"{s['t_ambient']:g} C, beyond the {s['r1_tolerance'] * 100:g} % tolerance the design's corners take")
+    if i_hot is None:
+        return text + "."
+    text += (f": at the weak corner the current delivered falls from {result.i_out_least * 1e3:.2f} mA to "
+             f"{i_hot * 1e3:.2f} mA")
     if i_hot < s["i_out"]:
         return text + (f", below i_out = {s['i_out'] * 1e3:.4g} mA: a 25 ppm/K part, or R1 one series step lower, "
                        "keeps it")

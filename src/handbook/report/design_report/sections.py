@@ -114,20 +114,19 @@ def results_table(t: str, result) -> str:
                                        for o in OUTPUTS[t] if o.key not in APART], (1,))
 
 
-def _eva_margins(t: str, result) -> list[list[str]]:
-    """Every limited quantity of the design's worst-case model at its worst corner (EVA, section 4's): the margin
-    as a fraction of the limit it is nearest (negative where it fails), named with that limit."""
+def _eva_margins(t: str, result) -> list[tuple[str, str, float, str]]:
+    """Every limited quantity of the design's worst-case model at its worst corner (EVA, section 4's): (label, key,
+    the margin as a fraction of the limit it is nearest, negative where it fails, that limit's name)."""
     from ...design.worstcase import engine, model
 
     m = model(t, result)
     eva = engine.corners(m)
-    rows = []
+    out = []
     for q in m.measures:
-        lo, hi = float(eva[q.key].min()), float(eva[q.key].max())
-        mg = engine.margin(q, lo, hi)
+        mg = engine.margin(q, float(eva[q.key].min()), float(eva[q.key].max()))
         if mg is not None:
-            rows.append([esc(readable(q.label)), value(f"{t}.eva_margin.{q.key}", mg, "%"), esc(q.limit_name)])
-    return rows
+            out.append((q.label, f"eva_margin.{q.key}", mg, q.limit_name))
+    return out
 
 
 def margins_table(t: str, result) -> str:
@@ -144,14 +143,14 @@ def margins_table(t: str, result) -> str:
                 "audio band": "droop_max"}
         m = result.figures["margins"]
         given = result.spec["theta_sa_available"] is not None  # else the heat sink is sized: no margin to state
-        rows = [[esc(k), value(f"{t}.margin.{k}", float(m[k]), "%"), esc(held.get(k) or SHOW.get(k, ("", "", "", ""))[3] or "")]
-                for k in CHECKS if k != "heat sink" or given]
+        found = [(k, f"margin.{k}", float(m[k]), held.get(k) or SHOW.get(k, ("", "", "", ""))[3] or "")
+                 for k in CHECKS if k != "heat sink" or given]
     else:
-        rows = _eva_margins(t, result)
-        shown = [float(r[1].split('"')[1]) for r in rows]  # the <data value="..."> of each
-        rows += [[esc(readable(o.label)), value(f"{t}.{o.key}", getattr(result, o.key), o.unit), "the design's own"]
-                 for o in OUTPUTS[t] if "margin" in o.key and o.unit == "%"
-                 and not any(abs(getattr(result, o.key) - v) < 1e-9 for v in shown)]
+        found = _eva_margins(t, result)
+        found += [(o.label, o.key, getattr(result, o.key), "the design's own") for o in OUTPUTS[t]
+                  if "margin" in o.key and o.unit == "%"
+                  and not any(abs(getattr(result, o.key) - mg) < 1e-9 for _, _, mg, _ in found)]
+    rows = [[esc(readable(label)), value(f"{t}.{key}", mg, "%"), esc(held_to)] for label, key, mg, held_to in found]
     return table(["margin (at the worst corner)", "value", "held to"], rows, (1,)) if rows else ""
 
 

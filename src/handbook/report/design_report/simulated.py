@@ -164,11 +164,10 @@ def section(ctx) -> str:
                 figures = checks.confirm({t: result})[t]
                 out.append(confirm_table(checks.confirm_rows(t, result, figures)))
                 if "meets_spec" in figures:
-                    corners = f" ({figures['corners']} corners simulated" if "corners" in figures else ""
-                    if "corners_searched" in figures:
-                        corners += (f", the worst of {figures['corners_searched']} by the circuit's own exact "
-                                    "figures")
-                    corners += ")" if corners else ""
+                    said = ([f"{figures['corners']} corners simulated"] if "corners" in figures else []) + (
+                        [f"the worst of {figures['corners_searched']} by the circuit's own exact figures"]
+                        if "corners_searched" in figures else [])
+                    corners = f" ({', '.join(said)})" if said else ""
                     out.append(f"<p>SPICE's worst corners meet the spec: <b>{'yes' if figures['meets_spec'] else 'no'}"
                                f"</b>{corners}.</p>")
                 ctx.spice_warnings.extend((t, f"SPICE: {w}") for w in checks.warnings(t, figures))
