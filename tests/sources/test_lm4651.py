@@ -63,7 +63,8 @@ def test_truncations_are_rounding_and_the_hp_corner_is_not_one():
 
 
 EMPIRICAL = {"lm4651-eq1", "lm4651-eq2", "lm4651-eq3", "lm4651-eq4", "lm4651-eq5", "lm4651-eq6", "lm4651-eq9",
-             "lm4651-eq12"}  # eq 12: the amplifier is not shown; held against the gains printed for figure 1
+             "lm4651-eq12",  # eq 12: the amplifier is not shown; held against the gains printed for figure 1
+             "lm4651-p-clip", "lm4651-thd"}  # the design's calibrations, held against the figures they are fitted to
 
 
 def test_equations():
@@ -76,7 +77,7 @@ def test_equations():
     assert {k for k, c in checks.items() if not c.agrees and k not in EMPIRICAL} == {"lm4651-eq8"}
     assert float(checks["lm4651-eq8"].factor) == pytest.approx(0.22479 / (8.8541878128e-12 * 0.0254 * 1e12), rel=1e-6)
     # empirical ones against the datasheet's own figures: eq 1 and 2 meet the loose 'about a second with 10 uF'
-    assert {k for k in EMPIRICAL if checks[k].agrees} == {"lm4651-eq1", "lm4651-eq2"}
+    assert {k for k in EMPIRICAL if checks[k].agrees} == {"lm4651-eq1", "lm4651-eq2", "lm4651-p-clip", "lm4651-thd"}
     # eq 12 with figure 1's 4.7 k / 3.5 k: the system table's 18 dB (18.004), not the Example's 7.5 (7.947)
     assert [p[-1] for p in checks["lm4651-eq12"].points] == [True, False]
     assert all(checks[k].relation == "empirical" for k in EMPIRICAL)
@@ -209,3 +210,41 @@ def test_the_3k9_oscillator_resistor_overheats_the_example_both_ways():
     p_fn = p_switch(f_sw_for(3.9e3, 5e3), 125.0, **times) + p_conduction(125.0, 4.0, 0.230)
     assert p_fn == pytest.approx(p_d(f, 350e-9), rel=1e-12)
     assert t_junction(p_fn, 50.0, 2.5, "TF", 0.2) == pytest.approx(t_j(p_d(f, 350e-9)), rel=1e-12)
+
+
+def test_the_designs_models_by_hand_and_against_their_records():
+    """Q, the residue, the coils' peak, the clipping power and THD+N's distortion: each record by hand at one
+    point, and the design's numpy function (sources.lm4651.circuit) equal to its record at others."""
+
+    from handbook.sources.lm4651 import circuit as c
+
+    def record(eq_id, **inputs):
+        e = lm4651.equation(eq_id)
+        expr = e.printed_physical() if e.empirical else e.derived  # an empirical one in physical symbols too
+        by_name = {s.name.replace("{", "").replace("}", ""): s for s in expr.free_symbols}  # C_{BYP} as C_BYP
+        assert {by_name[k] for k in inputs} == expr.free_symbols, (eq_id, sorted(inputs))
+        return e.value_at({by_name[k]: v for k, v in inputs.items()})
+
+    # by hand: the datasheet's 50 uH / 5 uF into 4 ohm; Q = R sqrt(C / 2L)
+    assert record("lm4651-filter-q", R_L=4.0, L_1=50e-6, C_BYP=5e-6) == pytest.approx(4 * math.sqrt(5e-6 / 100e-6))
+    # the residue at 125 kHz: 8 x 20 / pi / sqrt2 = 36.0 V rms through |H| = 1 / |1 - w^2 2LC + j w 2L/R|
+    w = 2 * math.pi * 125e3
+    h = 1 / abs(complex(1 - w * w * 2 * 50e-6 * 5e-6, w * 2 * 50e-6 / 4))
+    assert record("lm4651-ripple", V_s=20.0, f_SW=125e3, L_1=50e-6, C_BYP=5e-6, R_L=4.0) == pytest.approx(
+        8 * 20 / math.pi / math.sqrt(2) * h)
+    # the peak: 31.6 V into 4 ohm || 5 uF at 20 kHz, plus 20 V / (4 x 50 uH x 125 kHz) = 0.8 A
+    i_audio = abs(31.6 * complex(1 / 4, 2 * math.pi * 20e3 * 5e-6))
+    assert record("lm4651-inductor-peak", V_pk=31.6, R_L=4.0, f_a=20e3, C_BYP=5e-6, V_s=20.0, L_1=50e-6,
+                  f_SW=125e3) == pytest.approx(i_audio + 0.8)
+    assert record("lm4651-p-clip", V_s=20.0, R_L=4.0, f_SW=125e3) == pytest.approx(125.0)
+    assert record("lm4651-thd", f_SW=125e3, L_1=50e-6, C_BYP=5e-6, V_s=20.0, P_out=10.0, R_L=4.0) == pytest.approx(
+        0.003)
+    for f, l_, c_, rl, vs in ((61e3, 198e-6, 20.9e-6, 4.0, 20.0), (150e3, 47e-6, 2.2e-6, 8.0, 25.0)):
+        assert record("lm4651-filter-q", R_L=rl, L_1=l_, C_BYP=c_) == pytest.approx(c.filter_q(l_, c_, rl))
+        assert record("lm4651-ripple", V_s=vs, f_SW=f, L_1=l_, C_BYP=c_, R_L=rl) == pytest.approx(
+            c.ripple_rms(f, l_, c_, rl, vs))
+        assert record("lm4651-inductor-peak", V_pk=30.0, R_L=rl, f_a=20e3, C_BYP=c_, V_s=vs, L_1=l_, f_SW=f) == \
+            pytest.approx(c.inductor_peak(f, l_, c_, 30.0, rl, vs, 20e3))
+        assert record("lm4651-p-clip", V_s=vs, R_L=rl, f_SW=f) == pytest.approx(c.p_clip(f, rl, vs))
+        assert record("lm4651-thd", f_SW=f, L_1=l_, C_BYP=c_, V_s=vs, P_out=10.0, R_L=rl) == pytest.approx(
+            c.thd_n_joint(f, l_, c_, 10.0, rl, vs))

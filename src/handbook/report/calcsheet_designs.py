@@ -9,6 +9,7 @@ from __future__ import annotations
 from .calcsheet_steps import equation_step, shown, words
 
 _AN = "AN94002"
+_CLASS_D = "handbook.design.class_d"
 
 
 def _pct(fraction: float) -> str:
@@ -175,7 +176,8 @@ def limiter(r) -> list:
 
 def class_d(r) -> list:
     """The LM4651/LM4652 amplifier: R_DLY, the search's R_OSC, L and C_BYP, eq 5's frequency, the output
-    filter's corner and eq 11's heat sink.
+    filter (corner, Q, residue), THD+N, clipping and the coils' peak at their worst corners, the LM4652's
+    dissipation by eq 9, 10 and conduction, and eq 11's heat sink.
 
     Parameters
     ----------
@@ -187,17 +189,11 @@ def class_d(r) -> list:
     list of Step
         The steps, R_DLY first.
     """
-    from ..design.class_d import model
-    from ..sources.lm4651.circuit import C_DEAD, DEVICE, T_DEAD_0
+    from ..sources.lm4651.circuit import C_DEAD, T_DEAD_0
 
     s = r.spec
-    here = "handbook.design.class_d"
-    t_target = DEVICE["tj_max"] - s["tj_margin"]
-    theta_jc = DEVICE["theta_jc"][s["package"]]
+    here = _CLASS_D
     r_eff = r.r_osc - 0.4 * r.r_dly
-    f_set, p_set = model.heat_corner(s, r.f_sw_min, r.f_sw_max)  # the corner and dissipation eq 11 is taken at
-    fitted = ("the one needed" if s["theta_sa_available"] is None else
-              f"θ_SA = {s['theta_sa_available']:g} K/W available")
     return [
         words(f"{s['r_dly_series']} R_DLY at or above ({_at(s['dead_time_min'], 's')} − {_at(T_DEAD_0, 's')}) / "
               f"({_at(C_DEAD * 1e3, 's')}/kΩ × (1 − {_pct(s['r_tolerance'])})), the LM4651 table's dead time at "
@@ -217,9 +213,90 @@ def class_d(r) -> list:
               (f"{_at(r.f_sw_min, 'Hz')} .. {_at(r.f_sw_max, 'Hz')}", ""), f"{here}: oscillator tolerance"),
         equation_step("Output filter's corner", "lm4651-filter",
                       {"L_1": (r.l_out, "H"), "C_{BYP}": (r.c_out, "F")}, (r.f_corner, "Hz")),
-        words(f"LM4652 dissipation at {r.thermal_basis}, at the oscillator corner that sets the heat sink "
-              f"({_at(f_set, 'Hz')}; eq 9 and 10 switching, conduction at R_DS(on) maximum at {t_target:g} °C, idle "
-              f"share): {_at(p_set, 'W')}", (p_set, "W"), f"{here}: thermal model (model.heat)"),
+        *_class_d_filter(r, s),
+        *_class_d_heat(r, s),
+    ]
+
+
+def _corner_text(s: dict, corner: tuple) -> str:
+    f, l_c, c_c = corner
+    return f"f_SW {_at(f, 'Hz')}, L {_at(l_c, 'H')}, C_BYP {_at(c_c, 'F')}"
+
+
+def _class_d_filter(r, s) -> list:
+    """Q, the residue, THD+N, clipping and the coils' peak, each at the corner where it is worst."""
+    from ..design.class_d import model
+    from ..sources.lm4651 import circuit as lm
+
+    fig, rl, vs = r.figures, s["r_load"], s["supply"]
+    worst = model.worst_corners(s, r.r_osc, r.l_out, r.c_out, r.r_dly)
+    (fq, lq, cq), (fr, lr, cr), (ft, lt, ct), (fi, li, ci) = (worst[k] for k in ("filter Q", "ripple", "THD+N",
+                                                                                  "inductor peak"))
+    p_t = s["thd_test_power"]
+    dist = lm.thd_n_joint(ft, lt, ct, p_t, rl, vs)
+    resid = lm.residue_fraction(ft, lt, ct, p_t, rl, vs)
+    counted = ft < s["thd_bandwidth"]
+    v_pk = lm.v_clip_peak(fi, rl, vs)
+    rss = (f"√(({_pct(dist)})² + ({_pct(resid)})²)" if counted else
+           f"the distortion alone (the residue, {_pct(resid)}, at {_at(ft, 'Hz')} lies above the "
+           f"{_at(s['thd_bandwidth'], 'Hz')} band)")
+    load = {"R_L": (rl, "Ω"), "V_s": (vs, "V")}
+    return [
+        equation_step(f"Filter Q at its worst corner ({_corner_text(s, worst['filter Q'])})", "lm4651-filter-q",
+                      {"R_L": (rl, "Ω"), "L_1": (lq, "H"), "C_{BYP}": (cq, "F")}, (fig["q"], "1")),
+        equation_step(f"Switching residue at its worst corner ({_corner_text(s, worst['ripple'])})", "lm4651-ripple",
+                      {**load, "f_{SW}": (fr, "Hz"), "L_1": (lr, "H"), "C_{BYP}": (cr, "F")}, (fig["ripple"], "V")),
+        equation_step(f"THD+N's distortion at {_at(p_t, 'W')}, at the worst corner ({_corner_text(s, worst['THD+N'])})",
+                      "lm4651-thd", {r"\{f_{SW}\}_{\mathrm{Hz}}": (ft, "1"), r"\{L_1\}_{\mathrm{H}}": (lt, "1"),
+                                     r"\{C_{BYP}\}_{\mathrm{F}}": (ct, "1"), r"\{V_s\}_{\mathrm{V}}": (vs, "1"),
+                                     r"\{P_{out}\}_{\mathrm{W}}": (p_t, "1"), r"\{R_L\}_{\Omega}": (rl, "1")},
+                      (dist, "%")),
+        words(f"THD+N as the analyser reads it: the residue there over the test signal's rms, "
+              f"{_at(lm.ripple_rms(ft, lt, ct, rl, vs), 'V')} / √({_at(p_t, 'W')} · {_at(rl, 'Ω')}) = {_pct(resid)}; "
+              f"THD+N = {rss} = {_pct(fig['thd_n'])}", (f"{_pct(fig['thd_n'])}", ""),
+              f"{_CLASS_D}: thd_n_measured (residue root-sum-square inside the analyser's band)"),
+        equation_step(f"Clipping power at the fast corner ({_at(r.f_sw_max, 'Hz')})", "lm4651-p-clip",
+                      {r"\{V_s\}_{\mathrm{V}}": (vs, "1"), r"\{f_{SW}\}_{\mathrm{Hz}}": (r.f_sw_max, "1"),
+                       r"\{R_L\}_{\Omega}": (rl, "1")}, (r.p_clip, "W")),
+        equation_step(f"Coils' peak current at the worst corner ({_corner_text(s, worst['inductor peak'])}; V_pk at "
+                      f"clipping there, √(2 R_L P_clip) = {_at(v_pk, 'V')})", "lm4651-inductor-peak",
+                      {"V_{pk}": (v_pk, "V"), **load, "f_a": (s["f_audio"], "Hz"), "C_{BYP}": (ci, "F"),
+                       "L_1": (li, "H"), "f_{SW}": (fi, "Hz")}, (fig["i_peak"], "A"), errata=("lm4651-isckt",)),
+    ]
+
+
+
+def _class_d_heat(r, s) -> list:
+    """The LM4652's dissipation at the corner that sets the heat sink (eq 9, 10, conduction, idle), eq 11."""
+    from ..design.class_d import model
+    from ..sources.lm4651 import circuit as lm
+    from ..sources.lm4651.circuit import DEVICE
+
+    here = _CLASS_D
+    t_target = DEVICE["tj_max"] - s["tj_margin"]
+    theta_jc = DEVICE["theta_jc"][s["package"]]
+    f_set, p_set = model.heat_corner(s, r.f_sw_min, r.f_sw_max)  # the corner and dissipation eq 11 is taken at
+    p_th = float(model.thermal_power(s, f_set))
+    x = lm.switching_loss_fraction(f_set, t_overmod=s["t_overmod"])
+    p_sw = lm.p_switch(f_set, p_th, t_overmod=s["t_overmod"])
+    rds = float(lm.rds_on_max(t_target)) * s["rds_on_25"] / lm.RDS_ON_MAX_25
+    p_cond = lm.p_conduction(p_th, s["r_load"], rds)
+    p_idle = lm.p_idle_4652(s["supply"])
+    fitted = ("the one needed" if s["theta_sa_available"] is None else
+              f"θ_SA = {s['theta_sa_available']:g} K/W available")
+    return [
+        equation_step(f"Switching loss fraction at the corner that sets the heat sink ({_at(f_set, 'Hz')})",
+                      "lm4651-eq9", {"t_r": (DEVICE["t_rise"], "s"), "t_f": (DEVICE["t_fall"], "s"),
+                                     "T_{OVERMOD}": (s["t_overmod"], "s"), "f": (f_set, "Hz")}, (x, "%"),
+                      errata=("lm4651-overmod",)),
+        equation_step(f"Switching dissipation at {r.thermal_basis} ({_at(p_th, 'W')})", "lm4651-eq10",
+                      {"x": (x, "1"), "P_{out}": (p_th, "W")}, (p_sw, "W")),
+        equation_step(f"Conduction dissipation, R_DS(on) at its maximum at T_j = {t_target:g} °C", "lm4651-conduction",
+                      {"P_{out}": (p_th, "W"), "R_L": (s["r_load"], "Ω"), "R_{DS(on)}": (rds, "Ω")}, (p_cond, "W"),
+                      errata=("lm4651-t-rds",)),
+        words(f"LM4652 dissipation: switching {_at(p_sw, 'W')} + conduction {_at(p_cond, 'W')} + idle "
+              f"{_at(p_idle, 'W')} (the quiescent loss less the LM4651's share) = {_at(p_set, 'W')}",
+              (p_set, "W"), f"{here}: thermal model (model.heat)"),
         equation_step(f"Heat sink needed to hold T_j at {t_target:g} °C", "lm4651-eq11",
                       {"T_{jmax}": (t_target, "°C"), "T_{a}": (s["t_ambient"], "°C"), "P_D": (p_set, "W"),
                        r"\theta_{JC}": (theta_jc, "K/W"), r"\theta_{CS}": (s["theta_cs"], "K/W")},

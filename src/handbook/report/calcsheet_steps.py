@@ -179,7 +179,8 @@ def shown(value: float, unit: str) -> tuple[str, str]:
     value : float
         The value, SI (a speed in 1/s, shown in rpm; a temperature in C).
     unit : str
-        Its unit symbol as people read it ("A", "F", "Ω", "rpm", "°C", "N·m/A"; "1" or "" for a pure number).
+        Its unit symbol as people read it ("A", "F", "Ω", "rpm", "°C", "N·m/A"; "1" or "" for a pure number; "%"
+        for a fraction shown in per cent).
 
     Returns
     -------
@@ -189,6 +190,8 @@ def shown(value: float, unit: str) -> tuple[str, str]:
     if unit == "rpm":  # to the revolution, as the results tables show speeds (10259 rpm, not 10260)
         number = f"{value * 60.0:.0f}"
         return rf"{number}\,\text{{rpm}}", f"{number} rpm"
+    if unit == "%":  # a fraction shown in per cent
+        return rf"{_plain_number(value * 100)}\,\%", f"{value * 100:.3g} %"
     if unit in _PLAIN:
         tex = _plain_number(value)
         if unit in ("1", ""):
@@ -254,7 +257,17 @@ def equation_step(title: str, eq_id: str, values: dict, result: tuple, solve_for
     if missing:
         raise KeyError(f"{eq_id}: no value for {', '.join(sorted(missing))}")
     subst = {names[n]: shown(*values[n])[0] for n in names}
-    substituted = f"{lhs_tex} {rel} {sp.latex(expr, symbol_names=subst, mul_symbol='dot')}"
+    if e.empirical and e.printed_tex and solve_for is None and all(n in e.printed_tex for n in names):
+        # the printed form as the record writes it (sympy would multiply its constants together)
+        rhs = e.printed_tex
+        for n in sorted(names, key=len, reverse=True):
+            rhs = rhs.replace(n, subst[names[n]])
+        substituted = f"{lhs_tex} {rel} {rhs}"
+    else:
+        powered = {p.base for p in expr.atoms(sp.Pow) if p.base.is_Symbol and p.exp not in (-1, sp.S.Half, -sp.S.Half)}
+        subst = {s: rf"\left({v}\right)" if s in powered and r"\," in v else v for s, v in subst.items()}
+        fitted = expr.xreplace({c: sp.Float(c, 4) for c in expr.atoms(sp.Float)})  # a fitted constant to 4 digits
+        substituted = f"{lhs_tex} {rel} {sp.latex(fitted, symbol_names=subst, mul_symbol='dot')}"
     return Step(f"{title} ({e.title}, {form})", symbols_tex, substituted, shown(*result)[1], e.source,
                 tuple(dict.fromkeys(errata_of(e) + errata_named(errata))))
 

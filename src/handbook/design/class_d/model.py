@@ -321,6 +321,62 @@ def thermal(s: dict, f_slow, f_fast):
     return need, np.where(slow, tj_s, tj_f), np.where(slow, p_s, p_f), bare
 
 
+def per_corner(s: dict, f_slow, f_fast, l_out, c_out) -> dict:
+    """The figures judged at the eight corners of the oscillator, L and C (last axis), before the worst is taken.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units).
+    f_slow, f_fast : numpy.ndarray
+        The oscillator's slow and fast corners of each candidate, Hz.
+    l_out, c_out : numpy.ndarray
+        The candidates' nominal L (H) and C_BYP (F).
+
+    Returns
+    -------
+    dict
+        ``f``, ``l``, ``c`` (each corner's frequency, Hz, inductance, H, and capacitance, F) and the figure at each
+        corner: ``THD+N`` (fraction, as measured), ``ripple`` (V rms), ``filter Q`` and ``inductor peak`` (A), each
+        of shape (candidates, 8).
+    """
+    _, lo, co = corner_factors(s)
+    f = np.where(CORNERS[:, 0] < 0, np.asarray(f_slow)[..., None], np.asarray(f_fast)[..., None])
+    l, c = np.asarray(l_out)[..., None] * lo, np.asarray(c_out)[..., None] * co
+    rl, vs = s["r_load"], s["supply"]
+    return {"f": f, "l": l, "c": c,
+            "THD+N": lm4651.thd_n_measured(f, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"]),
+            "ripple": lm4651.ripple_rms(f, l, c, rl, vs), "filter Q": lm4651.filter_q(l, c, rl),
+            "inductor peak": lm4651.inductor_peak(f, l, c, lm4651.v_clip_peak(f, rl, vs), rl, vs, s["f_audio"])}
+
+
+def worst_corners(s: dict, r_osc: float, l_out: float, c_out: float, r_dly: float) -> dict:
+    """For one design, the corner at which each corner-judged figure is worst: what the calculation sheet
+    substitutes.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units).
+    r_osc, l_out, c_out, r_dly : float
+        The design's R_OSC (ohm), L (H), C_BYP (F) and R_DLY (ohm).
+
+    Returns
+    -------
+    dict
+        {"THD+N", "ripple", "filter Q", "inductor peak": (f, Hz; L, H; C_BYP, F) of the corner where that figure is
+        largest}.
+    """
+    f_nom = lm4651.f_sw_for(r_osc, r_dly)
+    f_slow, f_fast = osc_corners(f_nom, r_dly, s["osc_tol_slow"], s["osc_tol_fast"], s["r_tolerance"])
+    per = per_corner(s, np.array([f_slow]), np.array([f_fast]), np.array([l_out]), np.array([c_out]))
+    out = {}
+    for k in ("THD+N", "ripple", "filter Q", "inductor peak"):
+        i = int(np.argmax(per[k][0]))
+        out[k] = (float(per["f"][0, i]), float(per["l"][0, i]), float(per["c"][0, i]))
+    return out
+
+
 def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
     """Every figure and margin of candidates (arrays broadcast), each at its worst corner.
 
@@ -351,15 +407,10 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
                                                         (r_osc, l_out, c_out, r_dly)))
     f_nom = lm4651.f_sw_for(r_osc, r_dly)
     f_slow, f_fast = osc_corners(f_nom, r_dly, s["osc_tol_slow"], s["osc_tol_fast"], s["r_tolerance"])
-    _, lo, co = corner_factors(s)
-    f = np.where(CORNERS[:, 0] < 0, f_slow[..., None], f_fast[..., None])
-    l, c = l_out[..., None] * lo, c_out[..., None] * co
+    per = per_corner(s, f_slow, f_fast, l_out, c_out)
     rl, vs = s["r_load"], s["supply"]
-    thd = lm4651.thd_n_measured(f, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"]).max(-1)
-    ripple = lm4651.ripple_rms(f, l, c, rl, vs).max(-1)
+    thd, ripple, q, i_pk = (per[k].max(-1) for k in ("THD+N", "ripple", "filter Q", "inductor peak"))
     dev = band_deviation_box_db(s, l_out, c_out)
-    q = lm4651.filter_q(l, c, rl).max(-1)
-    i_pk = lm4651.inductor_peak(f, l, c, lm4651.v_clip_peak(f, rl, vs), rl, vs, s["f_audio"]).max(-1)
     p_clip = lm4651.p_clip(f_fast, rl, vs)
     need, tj, p_d, tj_bare = thermal(s, f_slow, f_fast)
     t_dead = lm4651.dead_time_total(r_dly * (1 - s["r_tolerance"]))  # R_DLY at its low corner

@@ -350,6 +350,164 @@ def output_filter() -> Equation:
                       "root give this form")
 
 
+# --- the design's own models of the output stage (no formula printed; each checked here) --------------------
+Vs, fsw, fa, Vpk, Qf, Vr, Ipk = sp.symbols(r"V_s f_{SW} f_a V_{pk} Q V_r I_{L\,pk}", positive=True)
+_s = sp.Symbol("s")
+
+
+def _num(sym, unit_tex: str):
+    """The number-only symbol {sym}_unit (ISO 80000-1), as eq 5 writes R_OSC."""
+    return sp.Symbol(r"\{" + sym.name + r"\}_{" + unit_tex + "}", positive=True)
+
+
+def _bridge_denominator():
+    """(a1, a2) of the loaded bridge filter H(s) = 1 / (1 + a1 s + a2 s^2): the load R_L with C_BYP across it,
+    fed through the two coils in series (2 L1), a voltage divider of impedances."""
+    z_load = RL / (1 + _s * RL * Cb)
+    h = sp.cancel(z_load / (z_load + 2 * _s * L1))
+    a2, a1, a0 = sp.Poly(sp.expand(sp.denom(h) / sp.numer(h)), _s).all_coeffs()
+    assert a0 == 1
+    return a1, a2
+
+
+def filter_q() -> Equation:
+    """The loaded bridge filter's Q, R_L sqrt(C_BYP / (2 L1)) (the design's; the datasheet prints none).
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-filter-q``: Q, a pure number, against R_L (ohm), L1 (H) and C_BYP (F).
+    """
+    a1, a2 = _bridge_denominator()
+    return Equation(
+        id="lm4651-filter-q", source=f"{NAME}, Output Stage Filtering (the design's model; no formula printed)",
+        title="Loaded output filter's Q", lhs=Qf, lhs_unit=sp.Integer(1), printed=RL * sp.sqrt(Cb / (2 * L1)),
+        derived=sp.sqrt(a2) / a1, units={RL: OHM, L1: u.henry, Cb: F},
+        law="voltage divider of 2 L1 and R_L || C_BYP: H = 1 / (1 + s 2L1/R_L + s^2 2 L1 C_BYP); Q = sqrt(a2) / a1",
+        note="The load is taken as a resistor (a loudspeaker is not); the datasheet asks for no peaking, the design "
+             "holds Q to q_max.")
+
+
+def ripple() -> Equation:
+    """The switching residue at the load, rms: the idle bridge's fundamental through the loaded filter.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-ripple``: V_r (V) against V_s (V), f_SW (Hz), L1 (H), C_BYP (F) and R_L (ohm).
+    """
+    a1, a2 = _bridge_denominator()
+    th = sp.Symbol("theta")
+    b1 = 2 / sp.pi * sp.integrate(2 * Vs * sp.sin(th), (th, 0, sp.pi))  # the +-2 V_s square wave's fundamental
+    wsw = 2 * sp.pi * fsw
+    gain = 1 / sp.sqrt((1 - a2 * wsw ** 2) ** 2 + (a1 * wsw) ** 2)
+    return Equation(
+        id="lm4651-ripple", source=f"{NAME}, Output Stage Filtering (the design's model; no formula printed)",
+        title="Switching residue at the load", lhs=Vr, lhs_unit=V,
+        printed=8 * Vs / (sp.pi * sp.sqrt(2)) / sp.sqrt((1 - 8 * sp.pi ** 2 * fsw ** 2 * L1 * Cb) ** 2
+                                                        + (4 * sp.pi * fsw * L1 / RL) ** 2),
+        derived=b1 / sp.sqrt(2) * gain, units={Vs: V, fsw: HZ, L1: u.henry, Cb: F, RL: OHM},
+        law="the fundamental of the idle bridge's +-2 V_s square wave (50 % duty, its largest), "
+            "(2/pi) integral of 2 V_s sin over half a period = 8 V_s / pi, times |H(j 2 pi f_SW)|, rms",
+        note="Harmonics ignored (3 f_SW is attenuated nine times more); an upper bound at any duty.")
+
+
+def inductor_peak() -> Equation:
+    """The coils' peak current: the audio current at the peak output voltage plus half the largest ripple.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-inductor-peak``: I_L,pk (A) against V_pk (V), R_L (ohm), f_a (Hz), C_BYP (F), V_s (V),
+        L1 (H) and f_SW (Hz).
+    """
+    dty = sp.Symbol("D", positive=True)
+    v_out = 2 * Vs * (2 * dty - 1)  # the bridge's average output at duty D
+    swing = (2 * Vs - v_out) * dty / fsw / (2 * L1)  # 2 L1 carries 2 V_s - v_out for D T
+    d_star = sp.solve(sp.diff(swing, dty), dty)[0]
+    wa = 2 * sp.pi * fa
+    return Equation(
+        id="lm4651-inductor-peak", source=f"{NAME}, Example Design, R_SCKT (the design's model; no formula printed)",
+        title="Peak coil current", lhs=Ipk, lhs_unit=A,
+        printed=Vpk * sp.sqrt(1 / RL ** 2 + (2 * sp.pi * fa * Cb) ** 2) + Vs / (4 * L1 * fsw),
+        derived=Vpk * sp.sqrt(sp.re(1 / RL + sp.I * wa * Cb) ** 2 + sp.im(1 / RL + sp.I * wa * Cb) ** 2)
+        + swing.subs(dty, d_star) / 2,
+        units={Vpk: V, RL: OHM, fa: HZ, Cb: F, Vs: V, L1: u.henry, fsw: HZ},
+        law="the load and C_BYP at the top of the band, |V_pk (1/R_L + j omega C_BYP)|, plus half the ripple "
+            "2 V_s D (1 - D) / (L1 f_SW), largest at D = 1/2 (volt-seconds on 2 L1 while the bridge is high)",
+        note="An upper bound: the audio peak and the ripple's largest half added. The datasheet: 'the inductor ripple "
+             "current and the peak output current must be lower than 10 amps' (R_SCKT).")
+
+
+_NV, _NF, _NR, _NL, _NC, _NP = (_num(Vs, r"\mathrm{V}"), _num(fsw, r"\mathrm{Hz}"), _num(RL, r"\Omega"),
+                                _num(L1, r"\mathrm{H}"), _num(Cb, r"\mathrm{F}"), _num(Pout, r"\mathrm{W}"))
+_NUMBERS = {_NV: Vs / V, _NF: fsw / HZ, _NR: RL / OHM, _NL: L1 / u.henry, _NC: Cb / F, _NP: Pout / W}
+
+
+def p_clip() -> Equation:
+    """The output power at 1 % THD (clipping) against f_SW, R_L and V_s: the design's calibrated model.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-p-clip``: the clipping power (W) against V_s (V), f_SW (Hz) and R_L (ohm), empirical.
+    """
+    from .circuit import A_OM, R_S, SUPPLY_REF, V_EFF
+
+    v_peak = sp.Float(V_EFF, 15) * _NV / SUPPLY_REF * (1 - sp.Float(A_OM, 15) * _NF) * _NR / (_NR + sp.Float(R_S, 15))
+    return Equation(
+        id="lm4651-p-clip", source=f"{NAME}, electrical characteristics, P_O at 1 % THD (the design's calibration)",
+        title="Clipping power", lhs=P, lhs_unit=W, lhs_scale=W, printed=v_peak ** 2 / (2 * _NR), scales=_NUMBERS,
+        units={Vs: V, fsw: HZ, RL: OHM}, empirical=True, law=NO_LAW,
+        printed_tex=(rf"\frac{{1}}{{2 \cdot \{{R_L\}}_{{\Omega}}}} "
+                     rf"\left({V_EFF:.4g} \cdot \frac{{\{{V_s\}}_{{\mathrm{{V}}}}}}{{20}}"
+                     rf" (1 - {A_OM * 1e9:.4g} \times 10^{{-9}} \cdot \{{f_{{SW}}\}}_{{\mathrm{{Hz}}}}) "
+                     rf"\cdot \frac{{\{{R_L\}}_{{\Omega}}}}{{\{{R_L\}}_{{\Omega}} + {R_S:.4g}}}\right)^2"),
+        fitted_to="the three clipping powers of the electrical characteristics at +-20 V and 1 % THD (125 W at "
+                  "125 kHz and 135 W at 75 kHz into 4 ohm, 75 W into 8 ohm): the peak output is a fixed voltage less "
+                  "a fixed time lost per period (the over-modulation pulse) across R_L against a series resistance "
+                  "(2 R_DS(on) and the coils); three points, three constants, so it reproduces them exactly",
+        table=(_pt("electrical characteristics, P_O at R_L = 4 ohm, 1 % THD", r"f_{SW} = 125\,\mathrm{kHz},\ "
+                   r"R_L = 4\,\Omega", {Vs: 20.0, fsw: 125e3, RL: 4.0}, "125", "W"),
+               _pt("electrical characteristics, P_O at f_SW = 75 kHz, R_L = 4 ohm, 1 % THD",
+                   r"f_{SW} = 75\,\mathrm{kHz},\ R_L = 4\,\Omega", {Vs: 20.0, fsw: 75e3, RL: 4.0}, "135", "W"),
+               _pt("electrical characteristics, P_O at R_L = 8 ohm, 1 % THD", r"f_{SW} = 125\,\mathrm{kHz},\ "
+                   r"R_L = 8\,\Omega", {Vs: 20.0, fsw: 125e3, RL: 8.0}, "75", "W")),
+        note="Scaled with the supply as a fixed fraction of the rails (the characteristics give +-20 V only).")
+
+
+def thd_distortion() -> Equation:
+    """THD+N's distortion term at a test power: the system table's 0.3 % scaled as a fixed error voltage.
+
+    Returns
+    -------
+    Equation
+        The record ``lm4651-thd``: THD (a fraction) against f_SW (Hz), L1 (H), C_BYP (F), V_s (V), P (W) and R_L
+        (ohm), empirical.
+    """
+    from .circuit import C_REF, F_REF, L_REF, SUPPLY_REF, THD_REF
+
+    thd = sp.Symbol(r"\mathrm{THD}_{dist}", positive=True)
+    printed = (sp.Float(THD_REF) * (sp.Float(F_REF) / _NF) ** 2 * sp.Float(L_REF * C_REF) / (_NL * _NC)
+               * _NV / SUPPLY_REF * sp.sqrt(sp.Integer(40) / (_NP * _NR)))
+    return Equation(
+        id="lm4651-thd", source=f"{NAME}, electrical characteristics, THD+N at 10 W (the design's scaling)",
+        title="THD+N, distortion term", lhs=thd, lhs_unit=sp.Integer(1), printed=printed, scales=_NUMBERS,
+        units={fsw: HZ, L1: u.henry, Cb: F, Vs: V, Pout: W, RL: OHM}, empirical=True, law=NO_LAW,
+        printed_tex=(r"0.003 \left(\frac{125000}{\{f_{SW}\}_{\mathrm{Hz}}}\right)^2 \cdot \frac{2.5 \times 10^{-10}}"
+                     r"{\{L_1\}_{\mathrm{H}} \cdot \{C_{BYP}\}_{\mathrm{F}}} \cdot \frac{\{V_s\}_{\mathrm{V}}}{20} \cdot "
+                     r"\sqrt{\frac{40}{\{P_{out}\}_{\mathrm{W}} \cdot \{R_L\}_{\Omega}}}"),
+        fitted_to="one point, the characteristics' 0.3 % at 10 W into 4 ohm, +-20 V, with the Output Stage Filtering's "
+                  "50 uH and 5 uF at 125 kHz; the scaling (a fixed error voltage, so 1 / V_rms; the switching residue "
+                  "through the second-order filter, 1 / (f_SW^2 L1 C_BYP); in proportion to the rails) is the design's "
+                  "assumption, its exponent 2 included",
+        table=(_pt("electrical characteristics, THD+N at 10 W, 4 ohm, +-20 V (50 uH, 5 uF, 125 kHz)",
+                   r"P = 10\,\mathrm{W},\ f_{SW} = 125\,\mathrm{kHz}",
+                   {fsw: 125e3, L1: 50e-6, Cb: 5e-6, Vs: 20.0, Pout: 10.0, RL: 4.0}, "0.3", "%"),),
+        note="What the analyser reads adds, root-sum-square, the switching residue (lm4651-ripple over the test "
+             "signal's rms) when f_SW lies inside its 80 kHz band.")
+
+
 def build() -> list[Equation]:
     """Every LM4651/LM4652 equation record.
 
@@ -359,4 +517,5 @@ def build() -> list[Equation]:
         Equations 1 to 12 and those the text implies, in the datasheet's order.
     """
     return [eq1(), eq2(), eq3(), eq4(), eq5(), eq6(), eq7(), eq8(), eq9(), eq10(), conduction(), eq11(), eq12(),
-            fb_pole1(), fb_pole2(), input_hp(), output_filter()]
+            fb_pole1(), fb_pole2(), input_hp(), output_filter(), filter_q(), ripple(), inductor_peak(), p_clip(),
+            thd_distortion()]
