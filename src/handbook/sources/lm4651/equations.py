@@ -398,7 +398,7 @@ def ripple() -> Equation:
     """
     a1, a2 = _bridge_denominator()
     th = sp.Symbol("theta")
-    b1 = 2 / sp.pi * sp.integrate(2 * Vs * sp.sin(th), (th, 0, sp.pi))  # the +-2 V_s square wave's fundamental
+    b1 = 2 / sp.pi * sp.integrate(2 * Vs * sp.sin(th), (th, 0, sp.pi))  # the ±2 V_s square wave's fundamental
     wsw = 2 * sp.pi * fsw
     gain = 1 / sp.sqrt((1 - a2 * wsw ** 2) ** 2 + (a1 * wsw) ** 2)
     return Equation(
@@ -407,7 +407,7 @@ def ripple() -> Equation:
         printed=8 * Vs / (sp.pi * sp.sqrt(2)) / sp.sqrt((1 - 8 * sp.pi ** 2 * fsw ** 2 * L1 * Cb) ** 2
                                                         + (4 * sp.pi * fsw * L1 / RL) ** 2),
         derived=b1 / sp.sqrt(2) * gain, units={Vs: V, fsw: HZ, L1: u.henry, Cb: F, RL: OHM},
-        law="the fundamental of the idle bridge's +-2 V_s square wave (50 % duty, its largest), "
+        law="the fundamental of the idle bridge's ±2 V_s square wave (50 % duty, its largest), "
             "(2/pi) integral of 2 V_s sin over half a period = 8 V_s / pi, times |H(j 2 pi f_SW)|, rms",
         note="Harmonics ignored (3 f_SW is attenuated nine times more); an upper bound at any duty.")
 
@@ -463,17 +463,17 @@ def p_clip() -> Equation:
                      rf"\left({V_EFF:.4g} \cdot \frac{{\{{V_s\}}_{{\mathrm{{V}}}}}}{{20}}"
                      rf" (1 - {A_OM * 1e9:.4g} \times 10^{{-9}} \cdot \{{f_{{SW}}\}}_{{\mathrm{{Hz}}}}) "
                      rf"\cdot \frac{{\{{R_L\}}_{{\Omega}}}}{{\{{R_L\}}_{{\Omega}} + {R_S:.4g}}}\right)^2"),
-        fitted_to="the three clipping powers of the electrical characteristics at +-20 V and 1 % THD (125 W at "
-                  "125 kHz and 135 W at 75 kHz into 4 ohm, 75 W into 8 ohm): the peak output is a fixed voltage less "
+        fitted_to="the three clipping powers of the electrical characteristics at ±20 V and 1 % THD (125 W at "
+                  "125 kHz and 135 W at 75 kHz into 4 Ω, 75 W into 8 Ω): the peak output is a fixed voltage less "
                   "a fixed time lost per period (the over-modulation pulse) across R_L against a series resistance "
                   "(2 R_DS(on) and the coils); three points, three constants, so it reproduces them exactly",
-        table=(_pt("electrical characteristics, P_O at R_L = 4 ohm, 1 % THD", r"f_{SW} = 125\,\mathrm{kHz},\ "
+        table=(_pt("electrical characteristics, P_O at R_L = 4 Ω, 1 % THD", r"f_{SW} = 125\,\mathrm{kHz},\ "
                    r"R_L = 4\,\Omega", {Vs: 20.0, fsw: 125e3, RL: 4.0}, "125", "W"),
-               _pt("electrical characteristics, P_O at f_SW = 75 kHz, R_L = 4 ohm, 1 % THD",
+               _pt("electrical characteristics, P_O at f_SW = 75 kHz, R_L = 4 Ω, 1 % THD",
                    r"f_{SW} = 75\,\mathrm{kHz},\ R_L = 4\,\Omega", {Vs: 20.0, fsw: 75e3, RL: 4.0}, "135", "W"),
-               _pt("electrical characteristics, P_O at R_L = 8 ohm, 1 % THD", r"f_{SW} = 125\,\mathrm{kHz},\ "
+               _pt("electrical characteristics, P_O at R_L = 8 Ω, 1 % THD", r"f_{SW} = 125\,\mathrm{kHz},\ "
                    r"R_L = 8\,\Omega", {Vs: 20.0, fsw: 125e3, RL: 8.0}, "75", "W")),
-        note="Scaled with the supply as a fixed fraction of the rails (the characteristics give +-20 V only).")
+        note="Scaled with the supply as a fixed fraction of the rails (the characteristics give ±20 V only).")
 
 
 def thd_distortion() -> Equation:
@@ -497,11 +497,11 @@ def thd_distortion() -> Equation:
         printed_tex=(r"0.003 \left(\frac{125000}{\{f_{SW}\}_{\mathrm{Hz}}}\right)^2 \cdot \frac{2.5 \times 10^{-10}}"
                      r"{\{L_1\}_{\mathrm{H}} \cdot \{C_{BYP}\}_{\mathrm{F}}} \cdot \frac{\{V_s\}_{\mathrm{V}}}{20} \cdot "
                      r"\sqrt{\frac{40}{\{P_{out}\}_{\mathrm{W}} \cdot \{R_L\}_{\Omega}}}"),
-        fitted_to="one point, the characteristics' 0.3 % at 10 W into 4 ohm, +-20 V, with the Output Stage Filtering's "
-                  "50 uH and 5 uF at 125 kHz; the scaling (a fixed error voltage, so 1 / V_rms; the switching residue "
+        fitted_to="one point, the characteristics' 0.3 % at 10 W into 4 Ω, ±20 V, with the Output Stage Filtering's "
+                  "50 µH and 5 µF at 125 kHz; the scaling (a fixed error voltage, so 1 / V_rms; the switching residue "
                   "through the second-order filter, 1 / (f_SW^2 L1 C_BYP); in proportion to the rails) is the design's "
                   "assumption, its exponent 2 included",
-        table=(_pt("electrical characteristics, THD+N at 10 W, 4 ohm, +-20 V (50 uH, 5 uF, 125 kHz)",
+        table=(_pt("electrical characteristics, THD+N at 10 W, 4 Ω, ±20 V (50 µH, 5 µF, 125 kHz)",
                    r"P = 10\,\mathrm{W},\ f_{SW} = 125\,\mathrm{kHz}",
                    {fsw: 125e3, L1: 50e-6, Cb: 5e-6, Vs: 20.0, Pout: 10.0, RL: 4.0}, "0.3", "%"),),
         note="What the analyser reads adds, root-sum-square, the switching residue (lm4651-ripple over the test "
