@@ -17,6 +17,7 @@ import sympy as sp
 from handbook import catalog
 from handbook.core.units import eng
 from handbook.design import spec as specmod
+from handbook.design.converter import coil, cores
 from handbook.report import calcsheet
 from handbook.sources.lm4651 import circuit as lm
 from handbook.sources.lm4651.circuit import DEVICE
@@ -135,7 +136,29 @@ def _converter(r):
             ("tca5600-eq4", None, {r"\alpha": j["alpha"], "f": j["f_min_design"]}, j["t1"], 1),
             ("tca5600-eq5", None, {"I_{out2}": s["i_out"], r"\alpha": j["alpha"]}, j["i_peak"], 1),
             ("tca5600-eq6", None, {"V_{L-}": r.vl_minus, "t_1": j["t1"], "I_{L(peak)}": j["i_peak"]}, j["l1"], 1),
-            ("tca5600-eq6a", None, {"V_{12(H)}": s["v12h"], "I_{L(peak)}": j["i_peak"]}, j["r1"], 1)]
+            ("tca5600-eq6a", None, {"V_{12(H)}": s["v12h"], "I_{L(peak)}": j["i_peak"]}, j["r1"], 1),
+            *_coil(r, s)]
+
+
+def _coil(r, s):
+    """The coil's records at the chosen core's own data (the cores table), each against what the design reports:
+    the gap's reluctance is the one PyOpenMagnetics' table gives at the reported gap; the winding's resistance per
+    metre is the table's wire at the copper's hottest (ambient plus the allowed rise), worked out here."""
+    table = cores.load()
+    shape, material = table["shapes"][r.core_shape], table["materials"][r.core_material]
+    wire = next(w for w in table["wires"] if w["name"] == r.wire)
+    r_core = shape["le"] / (4e-7 * math.pi * material["mu_i"] * shape["ae"])
+    t_cu = s["t_ambient"] + s["temperature_rise_max"]
+    per_m = wire["r_per_m_hot"] * (1 + 0.00393 * (t_cu - 20)) / (1 + 0.00393 * (cores.T_HOT - 20))
+    flux = {"L_1": r.l1_max, "I_{L(peak)}": r.i_peak_max, "N": r.turns}
+    return [("tca5600-gap", None, {"N": r.turns, "L_1": r.l1_nominal, r"\mathcal{R}_{core}": r_core},
+             coil.gap_reluctance(shape, r.gap), 1),
+            ("tca5600-b-peak", None, {**flux, "A_e": shape["a_centre"]}, r.b_peak, 1),
+            ("tca5600-b-peak", None, {**flux, "A_e": shape["a_min"]}, r.b_peak_min_area, 1),
+            ("tca5600-winding", None, {"I_{rms}": r.i_rms, "N": r.turns, r"\ell_{MLT}": shape["mlt"], "r'": per_m},
+             r.winding_loss, 1),
+            ("tca5600-rise", None, {"R_{th}": shape["r_th"], "P_{Cu}": r.winding_loss, "P_{core}": r.core_loss},
+             r.temperature_rise, 1)]
 
 
 ORACLE = {"commutation": _commutation, "current_limiter": _limiter, "class_d": _class_d, "converter": _converter}
@@ -203,7 +226,7 @@ def test_each_equation_step_evaluates_to_the_designs_number(designed, spec_name,
         else:
             assert eng(expected) in text or eng(expected, "X").split(" ")[0] in text, (text, expected)
         for name, v in inputs.items():  # every value the record takes is shown substituted
-            v_shown = v * RPM if name in ("N_{min}",) else v
+            v_shown = v * RPM if name in ("N_{min}",) else v * 1e6 if name == "A_e" else v  # rpm; mm²
             assert any(text in st.substituted_tex for text in _number_shown(v_shown)), (eq_id, name, v_shown,
                                                                                           st.substituted_tex)
 

@@ -6,6 +6,8 @@ E-series pick, a tolerance, a rating rule) is a step in words.
 """
 from __future__ import annotations
 
+import math
+
 from .calcsheet_steps import equation_step, shown, words
 
 _AN = "AN94002"
@@ -363,7 +365,56 @@ def converter(r) -> list:
               f"{r.turns} turns, {r.wire}", (f"{r.core_shape}, {r.turns} turns", ""),
               f"{here}: exact enumeration of PyOpenMagnetics' cores, smallest first"),
     ]
-    return out
+    return out + _coil(r, s)
+
+
+def _coil(r, s) -> list:
+    """The chosen core wound: turns, gap, flux density, winding loss, core loss and temperature rise."""
+    from ..design.converter import coil as cl
+    from ..design.converter import cores
+
+    table = cores.load()
+    shape, material = table["shapes"][r.core_shape], table["materials"][r.core_material]
+    here = "handbook.design.converter (coil)"
+    c = r.coil
+    r_core = cl.core_reluctance(shape, material)
+    t_coil = s["t_ambient"] + r.temperature_rise
+    b_sat = cl.b_sat(material, t_coil)
+    n_gap = math.sqrt(r.l1_nominal * (r_core + cl.gap_reluctance(shape, cl.GAP_MIN)))
+    n_sat = r.l1_max * r.i_peak_max / ((1 - s["saturation_margin_min"]) * b_sat * shape["a_min"])
+    r_gap = r.turns ** 2 / r.l1_nominal - r_core
+    per_m = c.r_dc / (r.turns * shape["mlt"])
+    flux = {"L_1": (r.l1_max, "H"), "I_{L(peak)}": (r.i_peak_max, "A"), "N": (r.turns, "1")}
+    return [
+        words(f"Turns: at least √(L1 (ℛ_core + ℛ_gap at {_at(cl.GAP_MIN, 'm')})) = {n_gap:.2f} for a gap the model "
+              f"holds, and L1,max I_pk,max / ((1 − {_pct(s['saturation_margin_min'])}) B_sat A_min) = {n_sat:.2f} to keep "
+              f"the saturation margin at the coil's own {t_coil:.3g} °C (B_sat {_at(b_sat, 'T')}): N = {r.turns}",
+              (f"{r.turns} turns", ""), f"{here}: the fewest turns meeting both (coil.coil)"),
+        equation_step(f"Reluctance the gaps must add for L1 = {_at(r.l1_nominal, 'H')} with {r.turns} turns",
+                      "tca5600-gap", {"N": (r.turns, "1"), "L_1": (r.l1_nominal, "H"),
+                                      r"\mathcal{R}_{core}": (r_core, "1/H")}, (r_gap, "1/H")),
+        words(f"PyOpenMagnetics' gap model (all of the core's gaps against the centre gap's length) inverted: centre "
+              f"gap {_at(r.gap, 'm')}; A_L = L1 / N² = {_at(r.a_l, 'H')}", (r.gap, "m"),
+              f"{here}: PyOpenMagnetics gap reluctance table, log-log interpolation"),
+        equation_step("Peak flux density over the centre column, at the highest peak current and L1 at its high end",
+                      "tca5600-b-peak", {**flux, "A_e": (shape["a_centre"], "m²")}, (r.b_peak, "T")),
+        equation_step("The same over the core's narrowest section, where saturation is judged", "tca5600-b-peak",
+                      {**flux, "A_e": (shape["a_min"], "m²")}, (r.b_peak_min_area, "T")),
+        words(f"Saturation margin at {t_coil:.3g} °C: 1 − {_at(r.b_peak_min_area, 'T')} / {_at(b_sat, 'T')} = "
+              f"{_pct(r.saturation_margin)} (at least {_pct(s['saturation_margin_min'])})", (r.saturation_margin, "%"),
+              f"{here}: {r.core_material}'s saturation against temperature, PyOpenMagnetics"),
+        equation_step(f"Winding loss: {r.wire} ({_at(c.wire_diameter, 'm')} copper, the thickest that fits the "
+                      f"bobbin; {c.current_density / 1e6:.3g} A/mm²), copper at its hottest", "tca5600-winding",
+                      {"I_{rms}": (r.i_rms, "A"), "N": (r.turns, "1"), r"\ell_{MLT}": (shape["mlt"], "m"),
+                       "r'": (per_m, "Ω/m")}, (r.winding_loss, "W")),
+        words(f"Core loss by the improved Generalised Steinmetz Equation with {r.core_material}'s coefficients, at the "
+              f"largest flux swing (L1,max I_pk,max / (N A_e) = {_at(r.l1_max * r.i_peak_max / (r.turns * shape['ae']), 'T')}), "
+              f"the largest over the supply range and the device corners: {_at(r.core_loss, 'W')}", (r.core_loss, "W"),
+              f"{here}: iGSE, PyOpenMagnetics' Steinmetz ranges (coil.core_loss)"),
+        equation_step("Temperature rise of the coil", "tca5600-rise",
+                      {"R_{th}": (shape["r_th"], "K/W"), "P_{Cu}": (r.winding_loss, "W"),
+                       "P_{core}": (r.core_loss, "W")}, (r.temperature_rise, "K")),
+    ]
 
 
 #: spec table -> its sheet

@@ -145,7 +145,7 @@ def errata_of(e) -> tuple:
 # values and units
 
 #: units written without an SI prefix (a prefix on kg or on a compound unit misleads)
-_PLAIN = {"N·m/A", "kg·m²", "K/W", "°C", "1", ""}
+_PLAIN = {"N·m/A", "kg·m²", "K/W", "°C", "K", "1", ""}
 
 
 def _unit_tex(unit: str) -> str:
@@ -171,6 +171,13 @@ def _plain_number(value: float) -> str:
     return f"{float(f'{value:.4g}'):g}"
 
 
+def _sci_text(tex: str) -> str:
+    """A number as :func:`_plain_number` writes it, in plain text: "4.2 \\times 10^{6}" -> "4.2 × 10⁶"."""
+    mantissa, _, exponent = tex.partition(r" \times 10^")
+    return mantissa + (" × 10" + exponent.strip("{}").translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+                       if exponent else "")
+
+
 def shown(value: float, unit: str) -> tuple[str, str]:
     """A value in SI units as the sheet shows it: (LaTeX, text).
 
@@ -180,7 +187,7 @@ def shown(value: float, unit: str) -> tuple[str, str]:
         The value, SI (a speed in 1/s, shown in rpm; a temperature in C).
     unit : str
         Its unit symbol as people read it ("A", "F", "Ω", "rpm", "°C", "N·m/A"; "1" or "" for a pure number; "%"
-        for a fraction shown in per cent).
+        for a fraction shown in per cent; "1/H" for a reluctance; "m²" shown in mm²).
 
     Returns
     -------
@@ -190,6 +197,11 @@ def shown(value: float, unit: str) -> tuple[str, str]:
     if unit == "rpm":  # to the revolution, as the results tables show speeds (10259 rpm, not 10260)
         number = f"{value * 60.0:.0f}"
         return rf"{number}\,\text{{rpm}}", f"{number} rpm"
+    if unit == "1/H":  # a reluctance: a power of ten, not a prefix (a "MA/Wb" misleads)
+        tex = _plain_number(value)
+        return rf"{tex}\,\text{{H}}^{{-1}}", _sci_text(tex) + " H⁻¹"
+    if unit == "m²":  # an area in mm² (a prefix on m² would square too: 11 µm² is not 11e-6 m²)
+        return rf"{_plain_number(value * 1e6)}\,\text{{mm}}^2", f"{value * 1e6:.4g} mm²"
     if unit == "%":  # a fraction shown in per cent
         return rf"{_plain_number(value * 100)}\,\%", f"{value * 100:.3g} %"
     if unit in _PLAIN:
