@@ -13,7 +13,7 @@ from html import escape
 _GREEK = {"alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ϵ", "varepsilon": "ε", "zeta": "ζ",
           "eta": "η", "theta": "θ", "lambda": "λ", "mu": "μ", "nu": "ν", "pi": "π", "rho": "ρ", "sigma": "σ",
           "tau": "τ", "phi": "ϕ", "varphi": "φ", "omega": "ω", "Delta": "Δ", "Gamma": "Γ", "Theta": "Θ",
-          "Lambda": "Λ", "Sigma": "Σ", "Phi": "Φ", "Omega": "Ω", "Psi": "Ψ"}
+          "Lambda": "Λ", "Sigma": "Σ", "Phi": "Φ", "Omega": "Ω", "Psi": "Ψ", "ell": "ℓ"}
 _OPERATORS = {"cdot": "·", "times": "×", "ge": "≥", "geq": "≥", "le": "≤", "leq": "≤", "approx": "≈",
               "pm": "±", "infty": "∞", "checkmark": "✓", "%": "%", "{": "{", "}": "}", "ldots": "…"}
 _MINUS = "\N{MINUS SIGN}"
@@ -115,6 +115,8 @@ class _Parser:
                     f"<mo>{escape(closing if closing != '.' else '')}</mo></mrow>")
         if val in ("mathit", "mathbf", "boldsymbol"):
             return self.group()
+        if val == "mathcal":  # a reluctance's script R
+            return self.group().replace("<mi>", '<mi mathvariant="script">')
         if val in _SPACES:
             return f'<mspace width="{_SPACES[val]}"/>'
         if val == "mu" and self.peek()[0] == "text":  # a unit's prefix: the micro sign
