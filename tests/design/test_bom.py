@@ -96,6 +96,18 @@ def test_every_rating_covers_its_worst_case_stress(case):
     # the technology where the design depends on it: C0G or film for timing, film across the load
     assert table["A1-C3"]["technology"].startswith(("C0G", "polypropylene")) and "film" in table["A3-C1"]["technology"]
     assert any(m in table["A4-L1"]["technology"] for m in ("TDK", "Ferroxcube")) and cv.core_shape in table["A4-L1"]["technology"]
+    # the ICs at their supplies: the LM4651/LM4652's 22 to 44 V carries 2 V_s, the LM358's 32 V the limiter's
+    # highest supply; the LM4652's current is the LM4651's 10 A limit, above the coils' worst peak
+    for ref in ("A3-U1", "A3-U2"):
+        assert table[ref]["voltage_rating"] == 44.0 and 22.0 <= table[ref]["stress"] == 2 * cd.spec["supply"] <= 44.0
+    assert table["A3-U2"]["current_rating"] == 10.0 > float(cd.figures["i_peak"])
+    assert table["A2-IC2"]["voltage_rating"] == 32.0 >= table["A2-IC2"]["stress"] == s["v_supply_max"]
+    assert table["A1-IC1"]["voltage_rating"] == 18.0
+    # C2 holds the regulator's input, V_out2 + V(9-8), at half its rating; the TCA5600 says it has no public ratings
+    v_c2 = cv.spec["v_out"] + cv.spec["v_regulator_drop"]
+    assert table["A4-C2"]["voltage_rating"] * HALF >= v_c2 and table["A4-C2"]["stress"] == pytest.approx(v_c2)
+    assert table["A4-C2"]["value"] == 100e-6 and "figure 13" in table["A4-C2"]["reason"]
+    assert "no public electrical characteristics" in table["A4-U1"]["rating_text"]
 
 
 def test_a_hot_board_needs_a_larger_rating():

@@ -38,6 +38,14 @@ TDA5144_VP_MAX = 18.0
 #: the voltage across the LM4651's R_OSC and R_DLY, at most (an assumption: the pins set bias currents and the
 #: datasheet gives no pin voltage; 5 V bounds a bias reference of this kind)
 PIN_VOLTAGE = 5.0
+#: the LM4651/LM4652's operating supply, V+ + V-, V (datasheet operating ratings: 22 V to 44 V)
+LM4651_SUPPLY = (22.0, 44.0)
+#: the TDA5144's supply V_P, V (TDA5144 datasheet: 4 V to 18 V)
+TDA5144_VP = (4.0, TDA5144_VP_MAX)
+#: the LM358's supply, single, V (TI LM358 datasheet, SLOS068, recommended operating conditions: 3 V to 32 V)
+LM358_SUPPLY = (3.0, 32.0)
+#: the TCA5600's storage capacitor C2 as the excerpt's figure 13 draws it, F (the design does not size it)
+C2_FIGURE_13 = 100e-6
 
 
 def _row(sheet: str, refs: str, part: str, value, unit: str, tolerance=None, *, power=None, voltage=None,
@@ -92,7 +100,10 @@ def commutation_rows(c, ic: str = "TDA5144") -> list[dict]:
         The rows (keys :data:`COLUMNS`); C5 and C6 only when designed (motor data, flyback time given).
     """
     sheet, s = SHEETS["commutation"][0], c.spec
-    rows = [_row(sheet, "IC1", f"{ic} BLDC motor driver", ic, "", reason="the motor IC the timers belong to")]
+    rows = [_row(sheet, "IC1", f"{ic} BLDC motor driver", ic, "", voltage=TDA5144_VP[1],
+                 rating_text=f"supply V_P {TDA5144_VP[0]:g} V to {TDA5144_VP[1]:g} V (TDA5144 datasheet); the timers "
+                             "charge their capacitors from it, so no capacitor sees more",
+                 reason="the motor IC the timers belong to")]
     caps = [("C3", "CAP-CD", c.cap_cd, f"commutation delay: smallest value whose swing at {s['rpm_min']:g} rpm fits "
              f"the switching window at every corner ({c.rpm_min_reliable:.0f} to {c.rpm_max_reliable:.0f} rpm)"),
             ("C4", "CAP-DC", c.cap_dc, "the slave timer: the same value as CAP-CD")]
@@ -129,7 +140,12 @@ def limiter_rows(lim) -> list[dict]:
     sheet, s = SHEETS["current_limiter"][0], lim.spec
     t_a = ambient(s)
     vz_low, vz_high = zener_range(s)
-    rows = [_row(sheet, "IC2", "LM358 dual op-amp", "LM358", "", reason="the comparator of AN94002 figure 3")]
+    rows = [_row(sheet, "IC2", "LM358 dual op-amp", "LM358", "", voltage=LM358_SUPPLY[1], stress=s["v_supply_max"],
+                 rating_text=f"supply {LM358_SUPPLY[0]:g} V to {LM358_SUPPLY[1]:g} V (TI LM358 datasheet, recommended "
+                             f"operating conditions): {s['v_supply_max']:g} V at most here; input offset "
+                             f"{s['offset'] * 1e3:g} mV in the design's corners (the LM358: 9 mV maximum over "
+                             "temperature)",
+                 reason="the comparator of AN94002 figure 3")]
     rows.append(_row(sheet, "R7", "current-sense resistor", lim.r7, "Ω", s["r7_tolerance"], power=lim.r7_rating,
                      stress=lim.p_r7, technology="metal film or metal strip, current sense", package=lim.r7_package,
                      tempco="≤ 100 ppm/K (min_margin covers about 1 %)",
@@ -207,6 +223,7 @@ def class_d_rows(cd) -> list[dict]:
     list of dict
         The rows (keys :data:`COLUMNS`).
     """
+    from ..sources.lm4651 import circuit as lm4651
     from .class_d import model
 
     sheet, s, fig = SHEETS["class_d"][0], cd.spec, cd.figures
@@ -218,10 +235,17 @@ def class_d_rows(cd) -> list[dict]:
     v_c = 2 * s["supply"]
     v_rating = ratings.capacitor_voltage(v_c, film=True)
     pin = PIN_VOLTAGE ** 2  # R_OSC and R_DLY each carry at most PIN_VOLTAGE
+    supply_text = (f"supply V+ + V− {LM4651_SUPPLY[0]:g} V to {LM4651_SUPPLY[1]:g} V, T_A −40 °C to +85 °C (LM4651/"
+                   f"LM4652 operating ratings): ±{s['supply']:g} V is {v_c:g} V, at {t_a:g} °C ambient")
     return [
-        _row(sheet, "U1", "LM4651 class-D PWM driver", "LM4651", "", reason="drives the LM4652" + (
-            "; pin 17 (DELAY) to ground: its own 27 ns meets dead_time_min, no R_DLY" if cd.r_dly == 0 else "")),
-        _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "",
+        _row(sheet, "U1", "LM4651 class-D PWM driver", "LM4651", "", voltage=LM4651_SUPPLY[1], stress=v_c,
+             rating_text=supply_text, reason="drives the LM4652" + (
+                 "; pin 17 (DELAY) to ground: its own 27 ns meets dead_time_min, no R_DLY" if cd.r_dly == 0 else "")),
+        _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "", voltage=LM4651_SUPPLY[1],
+             stress=v_c, current=lm4651.I_LIMIT,
+             rating_text=f"{supply_text}; output current: the LM4651's limit, which the datasheet's R_SCKT text asks to "
+                         f"keep at 10 A, above the coils' worst peak {eng(i_peak, 'A')}; T_j {cd.t_junction:.4g} °C "
+                         "with HS1, below 150 °C",
              reason="the output stage; its heat sink is HS1"),
         _resistor(sheet, "R1", "R_OSC, oscillator", cd.r_osc, s["r_tolerance"], s["r_osc_series"], pin / cd.r_osc, t_a,
                   f"sets {eng(cd.f_sw, 'Hz')} by eq 5 ({eng(cd.f_sw_min, 'Hz')} to {eng(cd.f_sw_max, 'Hz')} at the "
@@ -255,7 +279,8 @@ def class_d_rows(cd) -> list[dict]:
 
 
 def converter_rows(cv) -> list[dict]:
-    """The TCA5600 converter's parts: the IC (U1), the coil (L1) and the sense resistor (R1), on their sheet.
+    """The TCA5600 converter's parts: the IC (U1), the storage capacitor (C2, figure 13's), the coil (L1) and the
+    sense resistor (R1), on their sheet.
 
     Parameters
     ----------
@@ -275,8 +300,21 @@ def converter_rows(cv) -> list[dict]:
     maker = cores.load()["materials"][cv.core_material]["manufacturer"]
     i_sat = cv.i_peak_max / (1 - cv.saturation_margin)  # B is linear in I: the margin is 1 - B_peak / B_sat
     p_r1 = cv.i_rms ** 2 * cv.r1_part * (1 + s["r1_tolerance"])
+    v_c2 = s["v_out"] + s["v_regulator_drop"]
+    v_off = v_c2 + s["v_f"]
+    v_c2_rating = ratings.capacitor_voltage(v_c2)
     return [
-        _row(sheet, "U1", "TCA5600 dc/dc converter", "TCA5600", "", reason="the converter of the excerpt's figure 13"),
+        _row(sheet, "U1", "TCA5600 dc/dc converter", "TCA5600", "",
+             rating_text=f"no public electrical characteristics (the excerpt prints none): check the full datasheet for "
+                         f"V_CC2 up to {s['v_supply_max']:g} V, its switch off at {eng(v_off, 'V')} (C2 plus D1's drop) "
+                         f"and carrying {eng(cv.i_peak_max, 'A')} peak",
+             reason="the converter of the excerpt's figure 13"),
+        _row(sheet, "C2", "storage capacitor at the regulator's input", C2_FIGURE_13, "F", voltage=v_c2_rating,
+             stress=v_c2, technology="aluminium electrolytic, low ESR", package="radial",
+             rating_text=f"{v_c2_rating:g} V: it holds V_out2 + V(9-8) = {eng(v_c2, 'V')}, 50 % derating; ripple "
+                         f"current at least {eng(cv.i_rms, 'A')} rms (the coil's whole triangle, an upper bound)",
+             reason="figure 13's value, not sized by the design; the excerpt asks C2 ≫ C7 (0.22 µF) to limit the "
+                    "by-pass current through C7 while the coil dumps"),
         _row(sheet, "L1", "converter coil, wound to order", cv.l1_nominal, "H", s["a_l_tolerance"], current=i_sat,
              stress=cv.i_peak_max, technology=f"{cv.turns} turns of {cv.wire} on {maker} {cv.core_shape}, "
              f"{cv.core_material}, gapped to A_L {eng(cv.a_l, 'H')}", package=f"{cv.core_shape} set on its bobbin",

@@ -139,6 +139,12 @@ def test_implausible_designs_still_design_with_warnings():
     with pytest.raises(Infeasible) as exc:  # hotter still: say the hottest ambient that works
         class_d.design({"t_ambient": 85.0, "thermal_basis": "continuous_sine"})
     assert 70 < exc.value.achievable["t_ambient_max"] < 85 and "ambient of at most" in str(exc.value)
+    # a hot board designs (its heat sink holds T_j), but the parts are rated to 85 C only (operating ratings): said
+    warm = class_d.design({"t_ambient": 90.0})
+    assert [w for w in warm.warnings if "operating range" in w] == [
+        "t_ambient = 90 °C: outside the LM4651/LM4652's operating range, \N{MINUS SIGN}40 to 85 °C (datasheet "
+        "operating ratings); the heat sink holds T_j, but the parts are not rated there"]
+    assert not [w for w in class_d.design({"t_ambient": 85.0 - 1e-9}).warnings if "operating range" in w]
 
 
 

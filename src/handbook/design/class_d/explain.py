@@ -63,6 +63,9 @@ def binding_text(sol, fig: dict) -> str:
     return f"{text} (series design's tightest margins: " + ", ".join(f"{k} {v:.1%}" for k, v in tight) + ")"
 
 
+#: the LM4651/LM4652's operating ambient, C ("Temperature Range -40 C <= T_A <= +85 C", operating ratings)
+T_A_RATED = (-40.0, 85.0)
+
 def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
     """What a valid design does that is implausible: each warning says its threshold and why.
 
@@ -83,7 +86,8 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
     list of str
         The warnings, possibly none: a heat sink given or needed outside what is made (:data:`THETA_SA_MADE`) or
         none needed at all, a ``p_continuous`` above what the amplifier delivers or below ``p_out``, a load
-        outside the models' 4 to 8 ohm, C_BYP above 50 uF, L above ten times the datasheet's 50 uH.
+        outside the models' 4 to 8 ohm, C_BYP above 50 uF, L above ten times the datasheet's 50 uH, an ambient
+        outside the parts' operating range (:data:`T_A_RATED`).
     """
     out = []
     need, path = fig["theta_sa_required"], DEV["theta_jc"][s["package"]] + s["theta_cs"]
@@ -111,6 +115,10 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
     if s["p_continuous"] is not None and s["p_continuous"] < s["p_out"]:
         out.append(f"p_continuous = {s['p_continuous']:g} W is below p_out = {s['p_out']:g} W: the heat sink "
                    "cannot carry the rated output continuously")
+    if not T_A_RATED[0] <= s["t_ambient"] <= T_A_RATED[1]:
+        low, high = (f"{v:g}".replace("-", "\N{MINUS SIGN}") for v in T_A_RATED)
+        out.append(f"t_ambient = {s['t_ambient']:g} °C: outside the LM4651/LM4652's operating range, {low} to "
+                   f"{high} °C (datasheet operating ratings); the heat sink holds T_j, but the parts are not rated there")
     if not 4.0 <= s["r_load"] <= 8.0:
         out.append(f"r_load = {s['r_load']:g} ohm: the clipping and THD+N models are calibrated at 4 and 8 ohm only")
     if c_out > 50e-6:
