@@ -70,7 +70,9 @@ def test_every_rating_covers_its_worst_case_stress(case):
              **{f"A2-R{n}": i_shift ** 2 * getattr(lim, f"r{n}") * (1 + t) for n in (12, 13)},
              "A2-R14": i_r14 ** 2 * lim.r14 * (1 - t),
              "A3-R1": 25.0 / cd.r_osc,
-             "A4-R1": cv.i_rms ** 2 * cv.r1_part * (1 + cv.spec["r1_tolerance"])}
+             # R1 at its high end: its tolerance and its drift to t_ambient (100 ppm/K from 25 C)
+             "A4-R1": cv.i_rms ** 2 * cv.r1_part * (1 + cv.spec["r1_tolerance"])
+             * (1 + cv.spec["r1_tempco"] * abs(cv.spec["t_ambient"] - 25))}
     if cd.r_dly > 0:
         power["A3-R2"] = 25.0 / cd.r_dly
     else:  # pin 17 grounded: no resistor to order, and the IC's row says so

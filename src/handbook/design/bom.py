@@ -293,13 +293,14 @@ def converter_rows(cv) -> list[dict]:
         The rows (keys :data:`COLUMNS`): the coil by its core shape, material and maker as PyOpenMagnetics'
         database names them, wound to order.
     """
-    from .converter import cores
+    from .converter import cores, r1_ends
 
     sheet, s = SHEETS["converter"][0], cv.spec
     t_a = s["t_ambient"]
     maker = cores.load()["materials"][cv.core_material]["manufacturer"]
     i_sat = cv.i_peak_max / (1 - cv.saturation_margin)  # B is linear in I: the margin is 1 - B_peak / B_sat
-    p_r1 = cv.i_rms ** 2 * cv.r1_part * (1 + s["r1_tolerance"])
+    p_r1 = cv.i_rms ** 2 * cv.r1_part * r1_ends(s)[1]
+    r1_drift_pct = s["r1_tempco"] * abs(t_a - 25.0) * 100
     v_c2 = s["v_out"] + s["v_regulator_drop"]
     v_off = v_c2 + s["v_f"]
     v_c2_rating = ratings.capacitor_voltage(v_c2)
@@ -320,11 +321,12 @@ def converter_rows(cv) -> list[dict]:
              f"{cv.core_material}, gapped to A_L {eng(cv.a_l, 'H')}", package=f"{cv.core_shape} set on its bobbin",
              rating_text=f"saturates at about {eng(i_sat, 'A')} at {t_a + cv.temperature_rise:.3g} °C; the worst "
                          f"peak {eng(cv.i_peak_max, 'A')} leaves {cv.saturation_margin:.0%}",
-             reason=f"eq 6 in the slow corner: {eng(cv.l1_max, 'H')} at most at +{s['a_l_tolerance']:.0%} A_L; rise "
+             reason=f"eq 6 in the slow corner: {eng(cv.l1_max, 'H')} at most at +{s['a_l_tolerance'] * 100:g} % A_L; rise "
                     f"{cv.temperature_rise:.2g} K"),
         _resistor(sheet, "R1", "current-sense resistor", cv.r1_part, s["r1_tolerance"], s["r1_series"], p_r1, t_a,
-                  f"eq 6a in the device corner that delivers least: {eng(cv.r1_worst, 'Ω')} / (1 + "
-                  f"{s['r1_tolerance']:.0%}), rounded down"),
+                  f"eq 6a in the device corner that delivers least: {eng(cv.r1_worst, 'Ω')} over its high end "
+                  f"(+{s['r1_tolerance'] * 100:g} % and +{r1_drift_pct:.2g} % drift at {t_a:g} °C), rounded down",
+                  tempco=f"≤ {s['r1_tempco'] * 1e6:g} ppm/K"),
     ]
 
 

@@ -156,6 +156,10 @@ def _converter() -> tuple[Param, ...]:
         Param(name="r1_tolerance", default=0.01, unit="1", **_FRACTION,
               meaning="tolerance of the sense resistor R1, fraction (in the worst case of the peak current)",
               cite="assumption: a 1 % thick-film or metal-film chip resistor, the tolerance E96 parts are sold with"),
+        Param(name="r1_tempco", default=100e-6, unit="1/K", low=0.0, high=0.01,
+              meaning="R1's temperature coefficient, at most, either sign, 1/K: the drift from 25 C to t_ambient "
+                      "widens R1's ends beyond r1_tolerance (a cold start below 25 C is not in the spec)",
+              cite="assumption: a metal-film or thick-film chip resistor, at most 100 ppm/K (the BOM's class)"),
         _series("r1_series", "E96", "R1 (E96: 1 % parts in 2 % steps waste at most a step of peak current)"),
         Param(name="a_l_tolerance", default=0.1, unit="1", **_FRACTION,
               meaning="tolerance of the gapped core's A_L, fraction: the coil is wound so that L at +tolerance "

@@ -262,15 +262,16 @@ def _pct(x: float, places: int = 2) -> str:
 
 def _corner_params(result, supply: float, ends: tuple[int, ...]) -> dict:
     """The deck's parameters with the designed L1 and R1 and the TCA5600 at one corner of the design's box: R1
-    +-r1_tolerance, L1 +-a_l_tolerance, V12(H), V_CE(sat) and V_F each +-device_spread (``ends``: -1 or 1 each,
-    in that order), VCC2 at ``supply``."""
-    from ..design.converter import source_params
+    at its ends (tolerance and drift, :func:`~handbook.design.converter.r1_ends`), L1 +-a_l_tolerance, V12(H),
+    V_CE(sat) and V_F each +-device_spread (``ends``: -1 or 1 each, in that order), VCC2 at ``supply``."""
+    from ..design.converter import r1_ends, source_params
 
     s = result.spec
     k = dict(zip(("r1", "l1", "v12h", "vce_sat", "v_f"), ends))
     spread = s["device_spread"]
     p = {**defaults(), **source_params(s), "v_cc2_min": supply}
-    p.update(r1=result.r1_part * (1 + k["r1"] * s["r1_tolerance"]), l1=result.l1_nominal * (1 + k["l1"] * s["a_l_tolerance"]),
+    r_lo, r_hi = r1_ends(s)
+    p.update(r1=result.r1_part * (r_hi if k["r1"] > 0 else r_lo), l1=result.l1_nominal * (1 + k["l1"] * s["a_l_tolerance"]),
              **{key: p[key] * (1 + k[key] * spread) for key in ("v12h", "vce_sat", "v_f")})
     return p
 

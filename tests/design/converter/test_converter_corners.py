@@ -1,5 +1,6 @@
 """The converter holds at every corner of what it assumes: an oracle written here (eq 1, 2, 4 and 5 by hand, no
-handbook.design code) takes the designed R1 and L1 through all 2^5 corners of R1, A_L, V12(H), V_CE(sat) and V_F,
+handbook.design code) takes the designed R1 and L1 through all 2^5 corners of R1 (its tolerance and its drift
+from 25 C to t_ambient, each at the same end), A_L, V12(H), V_CE(sat) and V_F,
 and the Monte Carlo lot of the default, the template's and the pump example's converter meets every limit
 (handbook.design.converter.operating, handbook.design.worstcase.models)."""
 import itertools
@@ -13,7 +14,7 @@ from handbook.design.converter import result as converter
 #: the schema's defaults of the keys the oracle reads, written out again
 DEFAULTS = {"v_supply_min": 8.0, "v_supply_max": 14.4, "v_out": 12.0, "i_out": 0.05, "f_min": 20e3,
             "v_regulator_drop": 2.5, "v_f": 0.8, "v_ce_sat": 0.5, "v12h": 0.4, "r1_tolerance": 0.01,
-            "a_l_tolerance": 0.1, "device_spread": 0.1, "audible": "avoid"}
+            "a_l_tolerance": 0.1, "device_spread": 0.1, "audible": "avoid", "r1_tempco": 100e-6, "t_ambient": 85.0}
 PUMP = tomllib.loads((ROOT / "book" / "examples" / "pump_yield.toml").read_text())["converter"]
 SPECS = {
     "default": {},
@@ -45,8 +46,9 @@ def frequency(s, vcc, inductance, r1, v12h, vce, vf):
 def corners(s, r1, l_nominal):
     """Every corner of R1, A_L, V12(H), V_CE(sat) and V_F (2^5 = 32): R1, L and the three figures."""
     t, a, d = s["r1_tolerance"], s["a_l_tolerance"], s["device_spread"]
+    drift = s["r1_tempco"] * abs(s["t_ambient"] - 25.0)  # 100 ppm/K x 60 K = 0.6 % at the defaults
     for e in itertools.product((-1, 1), repeat=5):
-        yield (r1 * (1 + e[0] * t), l_nominal * (1 + e[1] * a), s["v12h"] * (1 + e[2] * d),
+        yield (r1 * (1 + e[0] * t) * (1 + e[0] * drift), l_nominal * (1 + e[1] * a), s["v12h"] * (1 + e[2] * d),
                s["v_ce_sat"] * (1 + e[3] * d), s["v_f"] * (1 + e[4] * d))
 
 
@@ -91,7 +93,7 @@ def test_the_low_supply_corner_is_v12h_high():
     spec = SPECS["low supply"]
     s = {**DEFAULTS, **spec}
     r = converter.design(spec)
-    r1_high = r.r1_part * (1 + s["r1_tolerance"])
+    r1_high = r.r1_part * (1 + s["r1_tolerance"]) * (1 + s["r1_tempco"] * (s["t_ambient"] - 25.0))
     d = s["device_spread"]
     at = {end: delivered(s, r1_high, s["v12h"] * (1 + end * d), s["v_ce_sat"] * (1 + d), s["v_f"] * (1 + d))
           for end in (-1, 1)}

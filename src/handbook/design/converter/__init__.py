@@ -8,12 +8,12 @@
 """
 from ..common import explained
 from .coil import frequency, supplies
-from .operating import AUDIO_BAND, corner, designed_at, source_params
+from .operating import AUDIO_BAND, corner, designed_at, r1_ends, source_params
 from .result import ConverterResult, checked, choose, design, sweep
 
 TABLE = "converter"
 #: the tolerances and spread the converter's corners take, each zeroed in turn by :func:`sensitivity`
-TOLERANCES = ("r1_tolerance", "a_l_tolerance", "device_spread")
+TOLERANCES = ("r1_tolerance", "r1_tempco", "a_l_tolerance", "device_spread")
 
 
 def enumerate(spec: dict | None = None) -> dict | None:
@@ -94,4 +94,4 @@ def sensitivity(result: ConverterResult) -> list[dict]:
 
 
 __all__ = ["AUDIO_BAND", "TABLE", "TOLERANCES", "ConverterResult", "checked", "corner", "design", "enumerate", "explain",
-           "frequency", "sensitivity", "source_params", "supplies", "sweep"]
+           "frequency", "r1_ends", "sensitivity", "source_params", "supplies", "sweep"]

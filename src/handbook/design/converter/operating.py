@@ -1,13 +1,14 @@
 """The converter's operating point and its corners: eq 1 to 6a at the nominal device figures, then R1, L1 and the
-full-load frequency range at the worst corners of R1 (``r1_tolerance``), A_L (``a_l_tolerance``) and the TCA5600's
-V12(H), V_CE(sat) and V_F (each +-``device_spread``: part-to-part spread and drift together, an assumption).
+full-load frequency range at the worst corners of R1 (``r1_tolerance`` and its drift to t_ambient, :func:`r1_ends`),
+A_L (``a_l_tolerance``) and the TCA5600's V12(H), V_CE(sat) and V_F (each +-``device_spread``: part-to-part spread
+and drift together, an assumption).
 
 Which corner is worst for what, from eq 1, 2 and 5 (VCC2 = v_supply_min for the current):
 
 * the current delivered, I_peak/2 x V_L-/(V_L- + V_L+) with I_peak = V12(H)/R1, falls as V_CE(sat) and V_F rise
   and as R1 rises; its logarithm is concave in V12(H), so its least is at one end of V12(H) (the low one, unless
   V_L- is nearly gone): :func:`weakest` takes the least of the eight device corners, R1 at its high end. R1 is
-  eq 6a at that corner, fitted at or below R1/(1 + ``r1_tolerance``);
+  eq 6a at that corner, fitted at or below R1 over its high end (:func:`r1_ends`);
 * the frequency 1/(L I_peak (1/V_L- + 1/V_L+)) falls as L, V12(H) and V_CE(sat) rise, as V_F falls and as R1
   falls, at every VCC2: :data:`SLOW` (A_L high, R1 low) sets L1 (f_min at v_supply_min) and the audio-band
   check over the supply range; :data:`FAST` (A_L low, R1 high) the highest frequency;
@@ -118,6 +119,40 @@ def weakest(s: dict) -> tuple[int, int, int]:
     return min(itertools.product((-1, 1), repeat=3), key=lambda ends: delivered(corner(s, ends), 1.0))
 
 
+def r1_drift(s: dict) -> float:
+    """R1's drift from 25 C to t_ambient at its largest, either way: ``r1_tempco`` x |t_ambient - 25 C|.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (``r1_tempco`` in 1/K, ``t_ambient`` in C).
+
+    Returns
+    -------
+    float
+        The drift, a fraction.
+    """
+    return s["r1_tempco"] * abs(s["t_ambient"] - 25.0)
+
+
+def r1_ends(s: dict) -> tuple[float, float]:
+    """R1's low and high ends as multipliers of its nominal: its tolerance and its drift at t_ambient, each either
+    way, (1 - tolerance)(1 - drift) and (1 + tolerance)(1 + drift).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[converter]`` table (``r1_tolerance`` a fraction, ``r1_tempco`` in 1/K, ``t_ambient`` in C).
+
+    Returns
+    -------
+    tuple of float
+        (low, high) multipliers of R1's nominal.
+    """
+    tol, drift = s["r1_tolerance"], r1_drift(s)
+    return (1 - tol) * (1 - drift), (1 + tol) * (1 + drift)
+
+
 def operating_point(s: dict) -> dict:
     """Eq 1 to 6a (the source's functions) at the nominal figures; R1 by eq 6a at the corner that delivers least,
     fitted from its series; the peak currents at their corners, the inductance to wind (A_L's tolerance, the slow
@@ -142,11 +177,11 @@ def operating_point(s: dict) -> dict:
         (a tuple, :data:`HOT`).
     """
     op = tca5600.design(source_params(s))
-    tol_r, tol_l = s["r1_tolerance"], s["a_l_tolerance"]
+    (r_lo, r_hi), tol_l = r1_ends(s), s["a_l_tolerance"]
     weak, slow, fast = corner(s, weakest(s)), corner(s, SLOW), corner(s, FAST)
     r1_worst = tca5600.design(source_params(weak))["r1"]  # eq 5 and 6a where the least current is delivered
-    r1_part = eseries.at_most(s["r1_series"], r1_worst / (1 + tol_r))
-    i_min, i_max = fast["v12h"] / (r1_part * (1 + tol_r)), slow["v12h"] / (r1_part * (1 - tol_r))
+    r1_part = eseries.at_most(s["r1_series"], r1_worst / r_hi)
+    i_min, i_max = fast["v12h"] / (r1_part * r_hi), slow["v12h"] / (r1_part * r_lo)
     l_max = frequency(slow, s["v_supply_min"], 1.0, i_max) / s["f_min"]  # f_min at the slow corner, lowest VCC2
     l_nom = l_max / (1 + tol_l)
     l_min = l_nom * (1 - tol_l)
@@ -155,7 +190,7 @@ def operating_point(s: dict) -> dict:
         f_slow.append(0.0)
     v_peak = min(max((v_top(fast) + fast["v_ce_sat"] + fast["v12h"]) / 2, s["v_supply_min"]), max(supplies(fast)))
     f_fast = max(frequency(fast, v, l_min, i_min) for v in (*supplies(fast), v_peak))
-    return {**op, "r1_worst": r1_worst, "r1_part": r1_part, "i_out_least": delivered(weak, r1_part * (1 + tol_r)),
+    return {**op, "r1_worst": r1_worst, "r1_part": r1_part, "i_out_least": delivered(weak, r1_part * r_hi),
             "i_peak_min": i_min, "i_peak_max": i_max, "l1_max": l_max, "l1_nominal": l_nom, "l1_min": l_min,
             "f_sw_min": min(f_slow), "f_sw_max": f_fast, "i_rms": i_max / math.sqrt(3), "duty": op["t1"] * s["f_min"],
             "weak": weak, "slow": slow, "fast": fast, "hot": tuple(corner(s, ends) for ends in HOT)}

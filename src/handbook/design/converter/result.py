@@ -13,8 +13,9 @@ Parts, their tolerances and the device's spread (:mod:`.operating`). V12(H), V_C
 their corners, +-``device_spread`` (no public characteristics: spread and drift together). The peak current is
 V12(H)/R1 and the load the converter carries is I_peak/2 x V_L-/(V_L- + V_L+) whatever the inductance, so R1 is
 eq 6a at the device corner that delivers least (V12(H) low, V_CE(sat) and V_F high unless V_L- is nearly gone),
-fitted from its series (``r1_series``, E96 by default) at or below that R1/(1 + ``r1_tolerance``): at its high end
-it still delivers ``i_out``. With V12(H) high and R1 at its low end the peak current is I_peak,max. The frequency
+fitted from its series (``r1_series``, E96 by default) at or below that R1 over its high end, (1 + ``r1_tolerance``)
+(1 + its drift ``r1_tempco`` x |t_ambient - 25 C|): at that end it still delivers ``i_out``. With V12(H) high and R1
+at its low end the peak current is I_peak,max. The frequency
 1/(L I_peak (1/V_L- + 1/V_L+)) falls as L, I_peak and V_CE(sat) grow and V_F falls, so the inductance that runs at
 f_min at the lowest VCC2 in that slow corner is a largest one: the coil is wound for it / (1 + ``a_l_tolerance``).
 The switching frequency is reported over VCC2 = ``v_supply_min`` .. ``v_supply_max`` at every corner (it peaks
@@ -90,6 +91,7 @@ from .operating import (  # noqa: F401 (the operating point's names are this mod
     designed_at,
     inaudible_f_min,
     operating_point,
+    r1_ends,
     source_params,
     weakest,
 )
@@ -117,7 +119,7 @@ class ConverterResult(Result):
     l1: float = reported('H', 'coil inductance L1 (eq 6)')
     r1: float = reported('ohm', 'current-sense resistor R1 (eq 6a)')
     r1_worst: float = reported('ohm', 'R1 by eq 5 and 6a at the device corner that delivers least (+-device_spread)')
-    r1_part: float = reported('ohm', 'R1 fitted (series value at or below that R1/(1 + r1_tolerance))')
+    r1_part: float = reported('ohm', 'R1 fitted (series value at or below that R1 over its high end: tolerance and drift)')
     i_out_least: float = reported('A', 'current delivered at v_supply_min, least over every corner')
     i_peak_max: float = reported('A', 'highest peak coil current (V12(H) at its high end, R1 at its low end)')
     l1_nominal: float = reported('H', 'inductance wound, nominal (f_min at +a_l_tolerance and the slow corner)')

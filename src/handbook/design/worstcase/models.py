@@ -160,34 +160,9 @@ def class_d(result) -> Model:
     return Model(srcs, measures, f, drift)
 
 
-#: R1's temperature coefficient at most, 1/K: the BOM's metal film (<= 100 ppm/K)
-R1_TC = 100e-6
-
-
-def r1_drift(result) -> tuple[float, float]:
-    """What R1's temperature drift does to the converter's weakest corner, which the design takes at R1's tolerance
-    alone: (R1's rise at t_ambient, a fraction: :data:`R1_TC` x (t_ambient - 25 C); the current delivered at the
-    weak corner with R1 risen by it too, A). The current is V12(H)/R1 times a factor R1 does not enter (eq 1, 2
-    and 5), so it scales as 1/R1 exactly.
-
-    Parameters
-    ----------
-    result : ConverterResult
-        A designed converter; ``i_out_least`` and the checked spec are read.
-
-    Returns
-    -------
-    tuple
-        (the drift, a fraction; the current delivered, A, or None for a result without ``i_out_least``).
-    """
-    s = result.spec
-    d = max(0.0, R1_TC * (s["t_ambient"] - 25.0))
-    least = getattr(result, "i_out_least", None)  # None: a stand-in result that carries no weak-corner figure
-    return d, None if least is None else least * (1 + s["r1_tolerance"]) / (1 + s["r1_tolerance"] + d)
-
-
 def r1_drift_sentence(result) -> str:
-    """The drift sentence of R1 (:func:`r1_drift`) as the report's section 4 states it.
+    """R1's temperature drift as the report's section 4 states it: how far it moves by t_ambient, that the design's
+    corners and this analysis take it, and the current delivered at the weak corner with it.
 
     Parameters
     ----------
@@ -197,21 +172,21 @@ def r1_drift_sentence(result) -> str:
     Returns
     -------
     str
-        The sentence: R1's rise at t_ambient, the weak corner's current with it, and what keeps it at i_out when
-        it falls below.
+        The sentence.
     """
+    from ..converter.operating import r1_drift
+
     s = result.spec
-    d, i_hot = r1_drift(result)
-    text = (f"R1 (the BOM's metal film, at most 100 ppm/K) rises up to {d * 100:.2f} % by t_ambient = "
-            f"{s['t_ambient']:g} C, beyond the {s['r1_tolerance'] * 100:g} % tolerance the design's corners take")
-    if i_hot is None:
+    text = (f"R1's temperature coefficient, at most {s['r1_tempco'] * 1e6:g} ppm/K either way (converter.r1_tempco, "
+            f"the BOM's class), moves it up to {r1_drift(s) * 100:.2f} % from 25 °C to t_ambient = {s['t_ambient']:g} °C; "
+            "the design's corners take it beside the "
+            f"{s['r1_tolerance'] * 100:g} % tolerance, and so does this analysis (the input 'R1 drift', uniform "
+            "either way: the tempco's sign and size are unknown within the bound)")
+    least = getattr(result, "i_out_least", None)  # None: a stand-in result that carries no weak-corner figure
+    if least is None:
         return text + "."
-    text += (f": at the weak corner the current delivered falls from {result.i_out_least * 1e3:.2f} mA to "
-             f"{i_hot * 1e3:.2f} mA")
-    if i_hot < s["i_out"]:
-        return text + (f", below i_out = {s['i_out'] * 1e3:.4g} mA: a 25 ppm/K part, or R1 one series step lower, "
-                       "keeps it")
-    return text + f", still at least i_out = {s['i_out'] * 1e3:.4g} mA."
+    return text + (f": at the weak corner, R1 at both high ends still delivers {least * 1e3:.2f} mA "
+                   f"(i_out = {s['i_out'] * 1e3:.4g} mA).")
 
 
 def converter(result) -> Model:
@@ -226,18 +201,23 @@ def converter(result) -> Model:
     Returns
     -------
     Model
-        Inputs ``r1``, ``l``, ``v12h``, ``vce``, ``vf``; quantities ``i_out_max`` (A, limit ``i_out``),
+        Inputs ``r1``, ``r1_drift`` (a factor), ``l``, ``v12h``, ``vce``, ``vf``; quantities ``i_out_max`` (A, limit ``i_out``),
         ``f_sw_vmin`` (Hz, limit the spec's ``f_min``) and ``f_sw_low`` (Hz, the lowest over the supply range;
         limit 20 kHz with ``audible = "avoid"``, else none).
     """
+    from ..converter.operating import r1_drift as drift_of
     from ..converter.result import AUDIO_BAND
 
     s, r1, l1 = result.spec, result.r1_part, result.l1_nominal
     spread = s["device_spread"]
     dev = (f"converter.device_spread = {spread:g}, an assumption: +-{spread:.0%} (no public TCA5600 characteristics; "
            "TCA5600 chapter's reading note); ")
+    drift_r1 = drift_of(s)  # zero at 25 C or with r1_tempco = 0: a fixed factor of 1 then, not an input
     srcs = (Source("r1", "R1", r1 * (1 - s["r1_tolerance"]), r1 * (1 + s["r1_tolerance"]), r1, "R1 tolerance",
                    f"converter.r1_tolerance = {s['r1_tolerance']:g}; " + UNIFORM, unit="ohm"),
+            *((Source("r1_drift", "R1 drift to t_ambient", 1 - drift_r1, 1 + drift_r1, 1.0, "R1 drift",
+                      f"converter.r1_tempco = {s['r1_tempco'] * 1e6:g} ppm/K × |t_ambient − 25 °C|, either way; "
+                      + UNIFORM),) if drift_r1 > 0 else ()),
             Source("l", "L1 (A_L)", l1 * (1 - s["a_l_tolerance"]), l1 * (1 + s["a_l_tolerance"]), l1, "A_L tolerance",
                    f"converter.a_l_tolerance = {s['a_l_tolerance']:g} (gapped core, turns fixed); " + UNIFORM, unit="H"),
             *(Source(k, part, s[key] * (1 - spread), s[key] * (1 + spread), s[key], part, dev + UNIFORM, unit="V")
@@ -250,8 +230,8 @@ def converter(result) -> Model:
         with np.errstate(divide="ignore", invalid="ignore"):
             return np.where(plus > 0, 1 / (l * i_pk * (1 / minus + 1 / np.where(plus > 0, plus, 1.0))), 0.0)
 
-    def f(r1, l, v12h, vce, vf):
-        i_pk = v12h / r1  # eq 5 read backwards: R1 sets the peak current
+    def f(r1, l, v12h, vce, vf, r1_drift=1.0):
+        i_pk = v12h / (r1 * r1_drift)  # eq 5 read backwards: R1 (as drifted) sets the peak current
         plus, minus = top + vf - s["v_supply_min"], s["v_supply_min"] - vce - v12h
         f_lo = freq(s["v_supply_min"], l, i_pk, vce, vf, v12h)
         return {"i_out_max": i_pk / 2 * minus / (minus + plus), "f_sw_vmin": f_lo,

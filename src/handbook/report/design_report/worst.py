@@ -167,13 +167,5 @@ def section(ctx, analyse=None) -> str:
             ctx.spice_warnings.append((t, f"worst case: every limit met by {_share(wc.yield_all)} of a Monte Carlo "
                                           f"lot ({', '.join(f'{k} {_share(v)}' for k, v in wc.yields.items())}) at "
                                           "the distributions section 4 states"))
-        if t == "converter":
-            from ...design.worstcase.models import r1_drift
-
-            d, i_hot = r1_drift(result)
-            if i_hot is not None and i_hot < result.spec["i_out"]:
-                ctx.spice_warnings.append((t, f"worst case: R1's drift at t_ambient (+{d * 100:.2f} %) takes the "
-                                              f"current delivered at the weak corner to {i_hot * 1e3:.2f} mA, below i_out "
-                                              "(section 4, drift)"))
         out.append(one(t, wc) + yield_recheck(ctx, t, result))
     return "".join(out)
