@@ -110,6 +110,8 @@ def test_every_rating_covers_its_worst_case_stress(case):
     assert table["A4-C2"]["voltage_rating"] * HALF >= v_c2 and table["A4-C2"]["stress"] == pytest.approx(v_c2)
     assert table["A4-C2"]["value"] == 100e-6 and "figure 13" in table["A4-C2"]["reason"]
     assert "no public electrical characteristics" in table["A4-U1"]["rating_text"]
+    # D1 blocks C2 while the switch is on and carries at most half the worst peak on average (50 % derating each)
+    assert table["A4-D1"]["voltage_rating"] * HALF >= v_c2 and table["A4-D1"]["current_rating"] * HALF >= cv.i_peak_max / 2
 
 
 def test_a_hot_board_needs_a_larger_rating():

@@ -115,7 +115,7 @@ def _designs() -> dict:
 CARRIED = {"commutation": {"C3": "cap_cd", "C4": "cap_dc"},
            "current_limiter": {"R7": "r7", "R9": "r9", "R10": "r10", "R11": "r11", "R12": "r12", "R13": "r13",
                                "R14": "r14"},
-           "class_d": {"L1": "l_out", "L2": "l_out", "CBYP": "c_out", "RL": "spec:r_load", "VO1": "spec:supply"},
+           "class_d": {"L1": "l_out", "L2": "l_out", "C1": "c_out", "RL": "spec:r_load", "VO1": "spec:supply"},
            "converter": {"L1": "l1_nominal", "R1": "r1_part", "VCC2": "spec:v_supply_min", "U1": "spec:v12h"}}
 
 
@@ -130,6 +130,29 @@ def test_each_designed_drawing_is_clean_and_carries_the_design(table):
     for ref, attr in CARRIED[table].items():
         want = result.spec[attr[5:]] if attr.startswith("spec:") else getattr(result, attr)
         assert on[ref] == pytest.approx(want, rel=1e-3), ref
+
+
+#: what a designed drawing shows that is no part to order: the simulation's stimulus, the load, a device's inside
+NOT_ORDERED = {"commutation": {"I_CH", "I_DIS", "V_LOW", "V_HIGH", "ICH", "IDIS", "VLOW", "VHIGH"},
+               "current_limiter": {"VS", "IM"}, "class_d": {"VO1", "VO2", "RL"}, "converter": {"VCC2", "S1", "VC2"}}
+
+
+@pytest.mark.parametrize("table", sorted(CARRIED))
+def test_each_drawn_part_to_order_carries_its_bom_designator(table):
+    """The drawing and the BOM name a part alike (the limiter's LM358 is IC2, C_BYP is C1), and its value is the
+    BOM's."""
+    from handbook.design import bom
+    from handbook.spice import designed
+
+    result = _designs()[table]
+    rows = bom.ROWS[table](result)
+    ordered = {ref.split("-", 1)[1]: row for row in rows for ref in row["designator"].split()}
+    on = drawn_parts(designed.drawing(table, result))
+    to_order = set(on) - NOT_ORDERED[table]
+    assert to_order and to_order <= set(ordered), (table, sorted(to_order - set(ordered)))
+    for ref in to_order:
+        if ordered[ref]["value"] is not None and isinstance(on[ref], float):
+            assert on[ref] == pytest.approx(ordered[ref]["value"], rel=1e-3), ref
 
 
 def test_the_converter_is_drawn_at_the_specs_operating_point_not_the_chapters():

@@ -279,8 +279,8 @@ def class_d_rows(cd) -> list[dict]:
 
 
 def converter_rows(cv) -> list[dict]:
-    """The TCA5600 converter's parts: the IC (U1), the storage capacitor (C2, figure 13's), the coil (L1) and the
-    sense resistor (R1), on their sheet.
+    """The TCA5600 converter's parts: the IC (U1), the storage capacitor (C2, figure 13's), the rectifier (D1), the
+    coil (L1) and the sense resistor (R1), on their sheet.
 
     Parameters
     ----------
@@ -316,6 +316,15 @@ def converter_rows(cv) -> list[dict]:
                          f"current at least {eng(cv.i_rms, 'A')} rms (the coil's whole triangle, an upper bound)",
              reason="figure 13's value, not sized by the design; the excerpt asks C2 ≫ C7 (0.22 µF) to limit the "
                     "by-pass current through C7 while the coil dumps"),
+        _row(sheet, "D1", "rectifier, coil to C2", "rectifier", "", voltage=2 * v_c2, current=cv.i_peak_max, stress=v_c2,
+             technology=f"fast silicon rectifier with V_F {eng(s['v_f'], 'V')} ±{s['device_spread'] * 100:g} % at a few "
+             "hundred mA, as the design assumes (a Schottky's lower V_F shortens the dump and raises the frequency: "
+             "design with its own v_f)", package="SOD-123 or DO-41 class",
+             rating_text=f"V_RRM ≥ {eng(2 * v_c2, 'V')}: it blocks C2's {eng(v_c2, 'V')} while S1 is on, 50 % derating; "
+                         f"I_F(AV) ≥ {eng(cv.i_peak_max, 'A')}: its average is at most half the worst peak "
+                         f"{eng(cv.i_peak_max, 'A')}, 50 % derating",
+             reason="figure 13's V_F between the coil (pin 10) and C2 (pin 9); the excerpt does not say whether the "
+                    "TCA5600 holds it: fit it unless the full datasheet does"),
         _row(sheet, "L1", "converter coil, wound to order", cv.l1_nominal, "H", s["a_l_tolerance"], current=i_sat,
              stress=cv.i_peak_max, technology=f"{cv.turns} turns of {cv.wire} on {maker} {cv.core_shape}, "
              f"{cv.core_material}, gapped to A_L {eng(cv.a_l, 'H')}", package=f"{cv.core_shape} set on its bobbin",

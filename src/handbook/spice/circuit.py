@@ -29,6 +29,7 @@ class Part:
     value: float | str  # SI value, or a model / device name
     unit: str = ""  # "ohm", "F", "H", "V", "A", or "" for a named device
     note: str = ""
+    drawn: str = ""  # the designator the drawing shows, where it is not ``ref`` (a designed circuit: the BOM's)
 
 
 #: the kinds of check, and the verdict the book prints for each when the values are within the tolerance

@@ -63,16 +63,28 @@ def _limiter(result):
     s = result.spec
     circuit = limiter.opamp(limiter_params(result))
     d1 = dataclasses.replace(circuit.part("D1"), value=_zener_name(s["zener_voltage"]))
-    parts = tuple(d1 if q.ref == "D1" else q for q in circuit.parts)
+    parts = _as_bom(tuple(d1 if q.ref == "D1" else q for q in circuit.parts), "current_limiter")
     return dataclasses.replace(circuit, parts=parts, draw=lambda: draw_opamp(parts))
+
+
+#: the BOM's designators (handbook.design.bom, within the table's sheet) of parts the SPICE deck names otherwise
+BOM_NAMES = {"current_limiter": {"U1": "IC2"}, "class_d": {"C_BYP": "C1"}}
+
+
+def _as_bom(parts: tuple, table: str) -> tuple:
+    """The parts with the BOM's designators drawn (the deck's own names stay its element names)."""
+    names = BOM_NAMES.get(table, {})
+    return tuple(dataclasses.replace(q, drawn=names[q.ref]) if q.ref in names else q for q in parts)
 
 
 def _class_d(result):
     from . import class_d
 
     s = result.spec
-    return class_d.circuit({"l_out": result.l_out, "c_out": result.c_out, "r_load": s["r_load"],
-                            "supply": s["supply"], "f_sw": result.f_sw, "f_audio": s["f_audio"]})
+    circuit = class_d.circuit({"l_out": result.l_out, "c_out": result.c_out, "r_load": s["r_load"],
+                               "supply": s["supply"], "f_sw": result.f_sw, "f_audio": s["f_audio"]})
+    parts = _as_bom(circuit.parts, "class_d")
+    return dataclasses.replace(circuit, parts=parts, draw=lambda: class_d.draw(parts))
 
 
 def _converter(result):

@@ -43,7 +43,7 @@ def label(part, sep: str = " ", what: str = "") -> str:
     """Designator and value: ``"R7 100 mΩ"`` (``sep="\\n"``: on two lines); ``what`` names a device's figure
     (``"V_F"`` -> ``"D1 $V_\\mathrm{F}$ = 800 mV"``)."""
     figure = f"{typeset(what)} = " if what else ""
-    return f"{typeset(part.ref)}{sep}{figure}{value(part)}"
+    return f"{typeset(part.drawn or part.ref)}{sep}{figure}{value(part)}"
 
 
 def start(unit: float = 3.0, fontsize: float = 10):

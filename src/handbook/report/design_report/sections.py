@@ -84,14 +84,16 @@ def parts_table(rows: list[dict]) -> str:
 #: per design table: what its drawing shows that is not a part to fit (the simulation's stimulus, a device's inside)
 NOT_FITTED = {
     "current_limiter": "VS is the supply and IM the motor current, ramped from zero to the value shown: the "
-                       "simulation's stimulus, not parts to fit; U1 is the TDA5144's op-amp with the offset and bias "
-                       "currents shown.",
-    "class_d": "VO1 and VO2 stand for the LM4652's two half-bridges (a ±V_s square wave at the switching frequency); "
-               "R_L is the loudspeaker.",
-    "converter": "VCC2 is the supply; S1 (the switch, with its V_CE(sat)) and U1 (the comparator, at V12(H)) are "
-                 "inside the TCA5600; VC2 stands for C2 at the regulator's input.",
+                       "simulation's stimulus, not parts to fit; IC2 is the LM358 (A2-IC2), drawn with the offset and "
+                       "bias currents the design's corners take. Designators are the BOM's, on sheet A2.",
+    "class_d": "VO1 and VO2 stand for the LM4652's two half-bridges (U2, a ±V_s square wave at the switching "
+               "frequency, which the LM4651 U1 sets with R_OSC, R1, and R_DLY, R2: not drawn); R_L is the loudspeaker. "
+               "Designators are the BOM's, on sheet A3.",
+    "converter": "VCC2 is the supply; S1 (the switch, with its V_CE(sat)) and U1 (its comparator, at V12(H)) are "
+                 "inside the TCA5600, U1 of the BOM; VC2 stands for C2 held at the regulator's input. Designators "
+                 "are the BOM's, on sheet A4.",
     "commutation": "I_CH, I_DIS, V_LOW and V_HIGH are the TDA5144's pin currents and switching levels (typical), not "
-                   "parts to fit.",
+                   "parts to fit. Designators are the BOM's, on sheet A1.",
 }
 
 
