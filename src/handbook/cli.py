@@ -171,6 +171,11 @@ def cmd_design(args) -> int:
                     print(f"warning: --spice: [{table}] {warning}", file=sys.stderr)
         except (spice.SpiceUnavailable, spice.SpiceError) as exc:
             return _design_error(args, 4, f"--spice: {exc}")
+    if args.worstcase:  # the report's section 4, as numbers: the same lot (N boards, SEED)
+        from .design import worstcase
+
+        for table, result in designed.items():
+            out[table]["worstcase"] = worstcase.as_json(worstcase.analyse(table, result))
     for option, write in (("bom", _write_bom), ("netlist", _write_netlists), ("schematic", _schematics)):
         if getattr(args, option):  # the tables the spec asked for that designed; what was left out is said
             code = write(args, spec, designed, failed, out)
@@ -276,6 +281,10 @@ def _print_designs(out: dict, failed: dict, asked: tuple = ()) -> None:
             line(o.label, shown_value(out[table][o.key], o.unit))
         for key, value in out[table].get("spice", {}).items():
             line(f"SPICE: {key}", _spice_value(key, value))
+        if "worstcase" in out[table]:
+            wc = out[table]["worstcase"]
+            line(f"worst case: Monte Carlo yield, {wc['n']} boards (seed {wc['seed']})",
+                 ", ".join([f"all limits {wc['yield_all']:.4%}"] + [f"{k} {v:.4%}" for k, v in wc["yields"].items()]))
 
 
 def _spice_value(key: str, value) -> str:
@@ -408,6 +417,9 @@ def main(argv=None) -> int:
     p.add_argument("--schematic", metavar="DIR",
                    help="also draw each designed circuit with its chosen values, one SVG per table in DIR (made if "
                    "missing): the tables the spec wrote (all four if none), as --bom")
+    p.add_argument("--worstcase", action="store_true",
+                   help="also run the worst-case analysis the report's section 4 shows (extreme value, root-sum-square, "
+                        "a seeded Monte Carlo of 100 000 boards: yields, sensitivities; adds 'worstcase' to each table)")
     p.add_argument("--spice", action="store_true",
                    help="also simulate the chosen parts at their worst-case corners with ngspice (adds 'spice' to each table)")
     p.add_argument("--template", action="store_true", help="print a complete spec, every key commented, and stop")

@@ -58,6 +58,20 @@ def test_template_report_numbers_are_design_json_s(template, tmp_path):
                 assert set(shown[f"{table}.{key}"]) == {float(v)}, f"{table}.{key}: report {shown[f'{table}.{key}']} != {v}"
                 checked += 1
     assert checked > 60
+    # section 4's numbers are design --worstcase's: the same lot (N boards, seed), every bound of every quantity
+    worst = json.loads(_handbook("design", template, "--json", "--worstcase").stdout)
+    bounds = 0
+    for table in ("commutation", "current_limiter", "class_d", "converter"):
+        wc = worst[table]["worstcase"]
+        assert wc["n"] == 100_000 and 0 <= wc["yield_all"] <= min(wc["yields"].values(), default=1.0)
+        for q in wc["quantities"]:
+            for field in ("nominal", "eva_low", "eva_high", "rss_low", "rss_high", "mc_low", "mc_high"):
+                key = f"wc.{table}.{q['key']}.{field.replace('_', '.')}"
+                assert set(shown[key]) == {float(q[field])}, (key, shown.get(key), q[field])
+                bounds += 1
+        for name, y in wc["yields"].items():  # the yields as the page words them, to 2 decimals of a per cent
+            assert f'<td>{name}</td><td class="num">{y:.2%}<'.replace("%<", " %<") in page, (table, name, y)
+    assert bounds > 60
     # what a reader sees is the engineering value of the same number
     assert re.search(r'data-key="current_limiter.r7">430 mΩ<', page) and design["current_limiter"]["r7"] == 0.43
     for sid in SECTIONS:

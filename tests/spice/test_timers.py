@@ -108,3 +108,34 @@ def test_the_cap_cd_delay_holds_at_any_top_speed(ngspice, rpm_max):
     rows = {r["id"]: r for r in evaluate(timers.commutation_delay({"rpm_max": rpm_max}))}
     for key in ("cd-delay-min", "cd-delay-max"):
         assert rows[key]["agrees"] and rows[key]["rel_diff"] < 0.002, rows[key]
+
+
+def test_cap_st_and_cap_ti_confirmed_where_designed(ngspice):
+    """The fan motor's design chooses CAP-ST and CAP-TI: SPICE's start period and watchdog times at their corners
+    are the design's (by construction: the same charge balance), its period outlasts the rotor's decay and its
+    watchdog the flyback; a CAP-ST half as large is caught (a differing figure and a missed decay)."""
+    import dataclasses
+    import tomllib
+    from pathlib import Path
+
+    from handbook.spice import checks
+
+    spec = tomllib.loads((Path(__file__).resolve().parents[2] / "book" / "examples" / "fan_motor.toml").read_text())
+    r = commutation.design(spec["commutation"])
+    s, tol = r.spec, r.spec["tolerance"]
+    figures = checks.judged("commutation", timers.design_check(r))
+    # eq 1 at C5's low end and the largest I_ST: 2 C (1 - tol) (V_high - V_low) / I_ST,max, worked here
+    hand = 2 * r.start.cap_st * (1 - tol) * (s["v_st_high"] - s["v_st_low"]) / s["i_st_max"]
+    assert figures["start_period_min"] == pytest.approx(hand, rel=1e-3) and figures["start_period_min"] >= r.start.settle
+    assert figures["t_wd_min"] == pytest.approx(r.watchdog.t_wd_min, rel=5e-3) and figures["t_wd_min"] >= s["flyback_time"]
+    assert figures["t_wd_max"] == pytest.approx(r.watchdog.t_wd_max, rel=5e-3)
+    assert figures["agrees"] and figures["meets_spec"] and "misses" not in figures
+    rows = [row["key"] for row in checks.confirm_rows("commutation", None, figures)]
+    assert rows[2:] == ["start_period_min", "t_wd_min", "t_wd_max"]
+    small = dataclasses.replace(r, start=dataclasses.replace(r.start, cap_st=r.start.cap_st / 2))
+    caught = checks.judged("commutation", timers.design_check(small))
+    assert caught["differs"] == ["start_period_min"] and caught["meets_spec"] is False
+    assert "shorter than the rotor's decay" in caught["misses"][0]
+    # the notes' default spec chooses neither: no rows for them
+    plain = checks.judged("commutation", timers.design_check(commutation.design()))
+    assert "start_period_min" not in plain and "t_wd_min" not in plain

@@ -269,10 +269,42 @@ def design_check(result) -> dict:
     reached = any(swings["min", k] >= (v_hi - v_lo) - 2 * CLAMP for sp, k, _, _, (v_lo, v_hi) in corners if sp == "min")
     hi = max(w for (sp, _), w in swings.items() if sp == "min")
     lo = min(w for (sp, _), w in swings.items() if sp == "max")
-    return {"swing_rpm_min": hi, "swing_rpm_min_equation": float(result.swing_at_rpm_min),
-            "swing_rpm_max": lo, "swing_rpm_max_equation": float(result.swing_at_rpm_max),
-            "window_reached": bool(reached), "corners": len(corners),
-            "meets_spec": bool(not reached and lo >= s["min_excursion"])}
+    out = {"swing_rpm_min": hi, "swing_rpm_min_equation": float(result.swing_at_rpm_min),
+           "swing_rpm_max": lo, "swing_rpm_max_equation": float(result.swing_at_rpm_max),
+           "window_reached": bool(reached), "corners": len(corners),
+           "meets_spec": bool(not reached and lo >= s["min_excursion"])}
+    return {**out, **_start_and_watchdog(result)}
+
+
+def _start_and_watchdog(result) -> dict:
+    """CAP-ST and CAP-TI where the design chose them, each simulated at the corner its limit is judged at (the
+    chapter's decks with the design's part at its tolerance end and the spec's current): the shortest start period
+    (C5 low, the largest I_ST) against the rotor's decay, the shortest watchdog time (C6 low, the largest I_WD)
+    against the flyback and the longest (C6 high, the smallest I_WD) against reverse rotation. Each beside the
+    design's own figure (``*_equation``); ``misses`` names a limit SPICE's figure misses, and ``meets_spec`` is
+    cleared then."""
+    s, tol = result.spec, result.spec["tolerance"]
+    out, misses = {}, []
+    if result.start is not None:
+        st = result.start
+        deck = start_oscillator({"cap_st": st.cap_st * (1 - tol), "i_st": s["i_st_max"], "v_low": s["v_st_low"],
+                                 "v_high": s["v_st_high"]})
+        out.update(start_period_min=run(deck.netlist)["period"], start_period_min_equation=float(st.period_min))
+        if out["start_period_min"] < st.settle:
+            misses.append(f"the shortest start period, {out['start_period_min']:.4g} s, is shorter than the rotor's "
+                          f"decay, {st.settle:.4g} s")
+    if result.watchdog is not None:
+        wd = result.watchdog
+        for key, cap, i_wd in (("t_wd_min", wd.cap_ti * (1 - tol), s["i_wd_max"]),
+                               ("t_wd_max", wd.cap_ti * (1 + tol), s["i_wd_min"])):
+            out[key] = run(watchdog({"cap_ti": cap, "i_wd": i_wd}).netlist)["t_wd"]
+            out[f"{key}_equation"] = float(getattr(wd, key))
+        if out["t_wd_min"] < s["flyback_time"]:
+            misses.append(f"the shortest watchdog time, {out['t_wd_min']:.4g} s, is shorter than the flyback")
+        if wd.t_reverse is not None and out["t_wd_max"] > wd.t_reverse:
+            misses.append(f"the longest watchdog time, {out['t_wd_max']:.4g} s, outlasts reverse rotation's "
+                          f"{wd.t_reverse:.4g} s")
+    return {**out, **({"misses": misses, "meets_spec": False} if misses else {})}
 
 
 # ----------------------------------------------------------------------------------------------

@@ -14,6 +14,7 @@ limits are: :mod:`.limiter`, :mod:`.models` and :mod:`.timers` (the TDA5144's CA
 """
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -99,6 +100,31 @@ class WorstCase:
         raise KeyError(key)
 
 
+#: the Monte Carlo lot the report and ``design --worstcase`` run: boards and seed (the same numbers in both)
+N, SEED = 100_000, 1
+
+
+def as_json(wc: WorstCase) -> dict:
+    """An analysis as ``design --worstcase --json`` writes it: everything but the samples, SI units.
+
+    Parameters
+    ----------
+    wc : WorstCase
+        The analysis (:func:`analyse`).
+
+    Returns
+    -------
+    dict
+        ``n``, ``seed``, ``yield_all`` and ``yields`` ({limit: fraction}), ``binding``, ``quantities`` (one dict
+        each: key, label, unit, nominal, eva_low/high, rss_low/high, mc_low/high, limit_low/high), ``distributions``,
+        ``sensitivity`` (source, share, margin_if_halved, yield_if_halved) and ``drift`` (sentences).
+    """
+    return {"n": wc.n, "seed": wc.seed, "yield_all": wc.yield_all, "yields": dict(wc.yields), "binding": wc.binding,
+            "quantities": [dataclasses.asdict(q) for q in wc.quantities],
+            "distributions": [dataclasses.asdict(d) for d in wc.distributions],
+            "sensitivity": [dataclasses.asdict(x) for x in wc.sensitivity], "drift": list(wc.drift)}
+
+
 #: table -> its model builder, from a design's result
 MODELS = {"commutation": _models.commutation,
           "current_limiter": lambda r: _limiter.model(r.r7, r.network, r.spec),
@@ -128,7 +154,7 @@ def model(table: str, result) -> engine.Model:
     return MODELS[table](result)
 
 
-def analyse(table: str, result, n: int = 100_000, seed: int = 1) -> WorstCase:
+def analyse(table: str, result, n: int = N, seed: int = SEED) -> WorstCase:
     """EVA, RSS and a seeded Monte Carlo of ``n`` boards of one design, with yields and sensitivities.
 
     Parameters

@@ -54,12 +54,19 @@ def _class_d(result, warned: list | None = None) -> str:
     p = {"l_out": result.l_out, "c_out": result.c_out, "supply": s["supply"], "f_sw": result.f_sw, "f_audio": s["f_audio"]}
     got = class_d.response((s["r_load"],), p)
     fig, ax = _axes("frequency", "|H| (dB)", "Hz", "", xlog=True)
-    ax.plot(got["f"], got[s["r_load"]], label=f"R_L = {eng(s['r_load'], 'Ω')}")
+    ax.plot(got["f"], got[s["r_load"]], color="C0", lw=1.6, label=f"nominal, R_L = {eng(s['r_load'], 'Ω')}")
+    tl, tc = s["l_tolerance"], s["c_tolerance"]
+    for (kl, kc), color in zip(((-1, 1), (-1, -1), (1, 1), (1, -1)), ("C1", "C2", "C3", "C4")):  # L and C_BYP corners
+        corner = class_d.response((s["r_load"],), {**p, "l_out": result.l_out * (1 + kl * tl),
+                                                    "c_out": result.c_out * (1 + kc * tc)})
+        ax.plot(corner["f"], corner[s["r_load"]], color=color, lw=0.8,
+                label=f"L {kl * tl * 100:+g} %, C_BYP {kc * tc * 100:+g} %".replace("-", "\N{MINUS SIGN}"))
     ax.axvline(result.f_corner, color="0.4", ls=":", label=f"corner {eng(result.f_corner, 'Hz')}")
     ax.axvline(s["f_audio"], color="#c0392b", ls="--", label=f"audio band {eng(s['f_audio'], 'Hz')}")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=6, ncol=2)
     return figure_svg(fig, "sim-class_d", "The output filter's response with the designed L and C_BYP and the spec's "
-                      "load (ngspice AC run).")
+                      "load, nominal and at the four corners of L's and C_BYP's tolerances (ngspice AC runs): the "
+                      "low-L, high-C corner peaks most (the largest Q), the high-L, high-C one droops first.")
 
 
 def _converter(result, warned: list | None = None) -> str:

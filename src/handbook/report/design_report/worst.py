@@ -5,11 +5,9 @@ Monte Carlo samples, the distributions assumed, the sensitivity ranking and the 
 from __future__ import annotations
 
 from ...core.units import readable
+from ...design.worstcase import SEED, N  # the Monte Carlo run the report asks for: design --worstcase's too
 from .page import esc, figure_svg, note, table, value
 from .sections import title
-
-#: the Monte Carlo run the report asks for
-N, SEED = 100_000, 1
 
 
 def _pair(key: str, low, high, unit: str) -> str:
