@@ -327,13 +327,13 @@ def cmd_spice(args) -> int:
         print(json.dumps([{k: (None if isinstance(r.get(k), float) and r[k] != r[k] else r.get(k)) for k in keys}
                           | ({"error": r["error"]} if "error" in r else {}) for r in rows], indent=1))
     else:
-        from .core.units import eng
+        from .core.units import eng, signed_percent
 
         unit = {r["unit"]: r["unit"].replace("ohm", "Ω") for r in rows}
         print(fit_table([[r["id"], eng(r["equation"], unit[r["unit"]]) if "error" not in r else "—",
                           eng(r["spice"], unit[r["unit"]]) if "error" not in r else "—",
-                          f"{(r['spice'] - r['equation']) / r['equation']:+.2%}" if "error" not in r else "—",
-                          f"{r['expected_difference']:+.2%}" if "error" not in r else "—",
+                          signed_percent((r["spice"] - r["equation"]) / r["equation"]) if "error" not in r else "—",
+                          signed_percent(r["expected_difference"]) if "error" not in r else "—",
                           r.get("error") or (r["verdict"] if r["agrees"] else "DIFFERS") + ": " + r["quantity"]]
                          for r in rows],
                         ["id", "equation", "SPICE", "diff", "expected", "verdict: quantity"], [30, 12, 12, 8, 8]))

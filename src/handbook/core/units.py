@@ -40,6 +40,24 @@ def prefixed(value: float, unit: str) -> str:
     return f"{mantissa:g}{suffix}".replace("-", "\N{MINUS SIGN}")
 
 
+def signed_percent(fraction: float, places: int = 2) -> str:
+    """A signed share as the book writes it: "+1.21 %", "−0.78 %" (a minus sign, a space before %).
+
+    Parameters
+    ----------
+    fraction : float
+        The share, a fraction (0.0121 is +1.21 %).
+    places : int
+        Decimals of the per cent.
+
+    Returns
+    -------
+    str
+        The share with its sign.
+    """
+    return f"{fraction * 100:+.{places}f} %".replace("-", "\N{MINUS SIGN}")
+
+
 def eng(value: float, unit: str = "", digits: int = 4) -> str:
     """An SI value to ``digits`` significant figures with a prefix: ``eng(1.455e-8, "F")`` -> ``"14.55 nF"``.
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from IPython.display import Markdown
 
-from ..core.units import eng
+from ..core.units import eng, signed_percent
 from ..spice import checks
 from ..spice.referee import refereed
 from ..spice.runner import SpiceError, SpiceUnavailable
@@ -41,7 +41,8 @@ def rows_table(rows: list[dict], equation_head: str = "equation", lead: dict | N
     body = table([*(["circuit"] if lead else []), "quantity", equation_head, "SPICE", "difference", "expected",
                   "tolerance", "verdict"],
                  [[*name(r), r["quantity"], eng(r["equation"], r["unit"]), eng(r["spice"], r["unit"]),
-                   f"{(r['spice'] - r['equation']) / r['equation']:+.2%}", f"{r.get('expected_difference', 0):+.2%}",
+                   signed_percent((r["spice"] - r["equation"]) / r["equation"]),
+                   signed_percent(r.get("expected_difference", 0)),
                    _tolerance(r["rtol"]), r["verdict"] if r["agrees"] else
                    "**differs**" + (f"; {r['caveat']}" if r.get("caveat") else "")] for r in rows])
     # one line per reason: rows that share a tolerance and its reason (a filter's corner, Q and gain; the same check

@@ -2,6 +2,7 @@
 designs confirmed by simulation (`python -m handbook design SPEC.toml --spice`)."""
 from __future__ import annotations
 
+from ..core.units import signed_percent
 from . import class_d, converter, decoupling, limiter, speed, timers
 from .runner import SpiceError, SpiceUnavailable, available, why_unavailable
 
@@ -122,7 +123,7 @@ def confirm_rows(table: str, result, figures: dict | None = None) -> list[dict]:
         expected, rtol = float(sim.get(f"{key}_expected", 0.0)), float(sim.get(f"{key}_rtol", rtol))
         rel = abs(value - eq) / abs(eq)
         if expected:
-            why = f"expected {expected:+.2%}: {why}"
+            why = f"expected {signed_percent(expected)}: {why}"
         row = {"key": key, "quantity": quantity, "unit": unit, "equation": eq, "spice": value, "rel_diff": rel, "rtol": rtol,
                "expected_difference": expected, "why": why, "kind": kind,
                "agrees": bool(abs(value / eq - 1 - expected) <= rtol)}

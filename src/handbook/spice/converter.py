@@ -25,7 +25,7 @@ from functools import partial
 
 import numpy as np
 
-from ..core.units import eng
+from ..core.units import eng, signed_percent
 from ..sources import tca5600
 from . import schematic
 from .bounds import percent
@@ -177,21 +177,21 @@ def circuit(p: dict | None = None) -> Circuit:
         Check("tca5600-t1", "charging time t1 (the circuit: L/R1 ln(V / (V - V12(H))))", "s", x["t1"], "t1", tol["t1"],
               "by construction: the exact charge of the deck's own R-L loop (KVL on its nodes, converter.exact), not "
               "a book equation, so it checks the deck and the simulator's integration, not the notes (eq 2 is the "
-              f"next row); expected {x['t1_deck'] / x['t1'] - 1:+.2%}: {restart}; {step('t1')}",
+              f"next row); expected {_pct(x['t1_deck'] / x['t1'] - 1)}: {restart}; {step('t1')}",
               kind="sanity", expected=x["t1_deck"] / x["t1"] - 1),
         Check("tca5600-t1-eq2", "charging time t1 by eq 2 as printed", "s", e["t1"], "t1", tol["t1"],
-              f"expected {x['t1_deck'] / x['t1_flat'] - 1:+.2%}: {ramp}: eq 2's known bias, the exact charge against "
-              f"R1's drop held at V12(H), {x['t1'] / x['t1_flat'] - 1:+.2%} (to first order -V12(H) / (2 V_L-), "
-              f"{x['t1_first'] / x['t1_flat'] - 1:+.2%}), and {restart} ({x['t1_deck'] / x['t1'] - 1:+.2%}); {step('t1')}",
+              f"expected {_pct(x['t1_deck'] / x['t1_flat'] - 1)}: {ramp}: eq 2's known bias, the exact charge against "
+              f"R1's drop held at V12(H), {_pct(x['t1'] / x['t1_flat'] - 1)} (to first order -V12(H) / (2 V_L-), "
+              f"{_pct(x['t1_first'] / x['t1_flat'] - 1)}), and {restart} ({_pct(x['t1_deck'] / x['t1'] - 1)}); {step('t1')}",
               expected=x["t1_deck"] / x["t1_flat"] - 1),
         Check("tca5600-t2", "dumping time t2 (eq 3)", "s", e["t2"], "t2", tol["t2"],
-              f"expected {x['t2_deck'] / x['t2_flat'] - 1:+.2%}: {diode}, down to the restart; {step('t2')}",
+              f"expected {_pct(x['t2_deck'] / x['t2_flat'] - 1)}: {diode}, down to the restart; {step('t2')}",
               expected=x["t2_deck"] / x["t2_flat"] - 1),
         Check("tca5600-f", "free-running frequency (eq 4, with eq 2's t1)", "Hz", e["f"], "f", tol["f"],
-              f"expected {x['f_deck'] / x['f_flat'] - 1:+.2%}: eq 2's bias in t1, {diode} and {restart}; {step('f')}",
+              f"expected {_pct(x['f_deck'] / x['f_flat'] - 1)}: eq 2's bias in t1, {diode} and {restart}; {step('f')}",
               expected=x["f_deck"] / x["f_flat"] - 1),
         Check("tca5600-iout", "current into C2 (eq 5, the half-triangle over the period)", "A", e["i_out_max"],
-              "i_out", tol["i_out"], f"expected {x['i_out_deck'] / x['i_out_flat'] - 1:+.2%}: the dump's charge with "
+              "i_out", tol["i_out"], f"expected {_pct(x['i_out_deck'] / x['i_out_flat'] - 1)}: the dump's charge with "
               f"{diode}, over the deck's period (eq 2's bias in t1, the restart); {step('i_out')} (t2's and the "
               "period's)",
               expected=x["i_out_deck"] / x["i_out_flat"] - 1))
@@ -256,8 +256,8 @@ CONTROL_GAP = 0.35  # the dashed control line stops this short of the switch's s
 
 
 def _pct(x: float, places: int = 2) -> str:
-    """A signed share as the book writes it: +1.0 %, −0.78 % (a minus sign, a space before the %)."""
-    return f"{x * 100:+.{places}f} %".replace("-", "\N{MINUS SIGN}")
+    """A signed share as the book writes it (:func:`~handbook.core.units.signed_percent`)."""
+    return signed_percent(x, places)
 
 
 def _corner_params(result, supply: float, ends: tuple[int, ...]) -> dict:

@@ -6,7 +6,7 @@ current when a running motor stalls (two transients), CAP-CD and CAP-DC through 
 transient). Skipped with the reason when ngspice is missing."""
 from __future__ import annotations
 
-from ...core.units import eng
+from ...core.units import eng, signed_percent
 from .page import esc, figure_svg, note, table
 from .sections import title
 
@@ -20,7 +20,7 @@ def _difference(r: dict) -> str:
     if not r.get("expected_difference"):
         return f"{r['rel_diff']:.3%}".replace("%", " %")
     signed = r["spice"] / r["equation"] - 1
-    return f"{signed:+.3%} (expected {r['expected_difference']:+.3%})".replace("%", " %")
+    return f"{signed_percent(signed, 3)} (expected {signed_percent(r['expected_difference'], 3)})"
 
 
 def confirm_table(rows: list[dict]) -> str:
