@@ -8,7 +8,7 @@
 """
 from ..common import explained
 from .coil import frequency, supplies
-from .operating import AUDIO_BAND, corner, designed_at, r1_ends, source_params
+from .operating import AUDIO_BAND, corner, designed_at, r1_drift, r1_ends, source_params
 from .result import ConverterResult, checked, choose, design, sweep
 
 TABLE = "converter"
@@ -94,4 +94,4 @@ def sensitivity(result: ConverterResult) -> list[dict]:
 
 
 __all__ = ["AUDIO_BAND", "TABLE", "TOLERANCES", "ConverterResult", "checked", "corner", "design", "enumerate", "explain",
-           "frequency", "r1_ends", "sensitivity", "source_params", "supplies", "sweep"]
+           "frequency", "r1_drift", "r1_ends", "sensitivity", "source_params", "supplies", "sweep"]
