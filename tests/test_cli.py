@@ -264,3 +264,17 @@ def test_design_netlist_is_written_whole_or_not_at_all(tmp_path, monkeypatch, ca
                 assert [p.name for p in folder.iterdir()] == ["class_d.cir"]
                 assert (folder / "class_d.cir").read_text() == before
                 shutil.rmtree(folder)
+
+
+def test_spice_figures_in_text_carry_their_own_units():
+    """design --spice's text output: each figure in the unit of its check (a frequency in Hz, not V), a supply in V,
+    an expected difference signed in per cent, counts and the 'misses' sentences as they are (a list once broke it)."""
+    from handbook.cli import _spice_value
+
+    assert _spice_value("f", 19843.7) == "19.84 kHz" and _spice_value("f_equation", 20000.0) == "20 kHz"
+    assert _spice_value("i_out_supply", 8.0) == "8 V" and _spice_value("f_supply", 14.4) == "14.4 V"
+    assert _spice_value("i_out_expected", 0.012468).startswith("+1.25 %")
+    assert _spice_value("f_expected", -0.00798).startswith("\N{MINUS SIGN}0.80 %")
+    assert _spice_value("corners_searched", 96) == "96 searched" and _spice_value("f_rtol", 0.001) == "±0.1 %"
+    assert _spice_value("misses", ["one", "two"]) == "one; two" and _spice_value("differs", []) == "none"
+    assert _spice_value("ripple_at_load", 0.02954) == "29.54 mV rms" and _spice_value("t_wd_min", 0.00237) == "2.37 ms"

@@ -288,17 +288,27 @@ def _print_designs(out: dict, failed: dict, asked: tuple = ()) -> None:
 
 
 def _spice_value(key: str, value) -> str:
-    """A --spice figure with its unit: currents, frequencies, voltages (swings, headroom, ripple), yes/no."""
-    from .core.units import eng
+    """A --spice figure as a person reads it: its unit from the check it belongs to (:data:`~.spice.checks.CONFIRM`),
+    a supply in V, an expected difference signed in per cent, a step bound as ± per cent, counts, yes/no, lists."""
+    from .core.units import eng, signed_percent
+    from .spice.checks import CONFIRM
 
+    units = {k: unit for rows in CONFIRM.values() for _q, unit, k, *_ in rows}
     if isinstance(value, bool) or key in ("ok", "window_reached", "meets_spec", "agrees"):
         return "yes" if value else "no"
-    if key == "differs":
-        return ", ".join(value) or "none"
-    if key == "corners":
-        return f"{value:d} simulated"
-    unit = "A" if key.startswith("i_") else "Hz" if key.startswith("f_") else "V"
-    return eng(value, unit) + (" rms" if key.startswith("ripple") else "")
+    if isinstance(value, (list, tuple)):  # differs, misses: the keys or the sentences
+        return "; ".join(map(str, value)) or "none"
+    if key.startswith("corners"):
+        return f"{int(value):d}" + (" simulated" if key == "corners" else " searched")
+    if key.endswith("_expected"):
+        return signed_percent(value) + " (what the circuit's physics predicts against the equations)"
+    if key.endswith("_rtol"):
+        return f"±{value * 100:.2g} %"
+    if key.endswith("_supply"):
+        return eng(value, "V")
+    base = key.removesuffix("_equation")
+    unit = units.get(base) or ("A" if base.startswith("i_") else "Hz" if base.startswith("f_") else "V")
+    return eng(value, unit) + (" rms" if base.startswith("ripple") else "")
 
 
 def cmd_report(args) -> int:
