@@ -154,7 +154,8 @@ def _class_d_heat(s, f):
     t_j = 150.0 - s["tj_margin"]
     x = (25e-9 + 26e-9 + s["t_overmod"]) * f
     x5 = (25e-9 + 26e-9 + 310e-9) * 125e3
-    idle = (5 / 0.55 - 5 - 5 / 4 * 2 * 0.2 - x5 * 5 / (1 - x5)) * s["supply"] / 20 - 0.036 * 2 * s["supply"]
+    # the LM4651's own idle: its 36 mA is |I+| + |I-| (the table's definition), drawn from +-V_s: V_s x 36 mA
+    idle = (5 / 0.55 - 5 - 5 / 4 * 2 * 0.2 - x5 * 5 / (1 - x5)) * s["supply"] / 20 - 0.036 * s["supply"]
     watts = x * p / (1 - x) + idle + p / s["r_load"] * 2 * s["rds_on_25"] * (1 + 0.15 / 75 * (t_j - 25))
     return (t_j - s["t_ambient"]) / watts - {"TF": 2.0, "T": 1.0}[s["package"]] - s["theta_cs"]
 

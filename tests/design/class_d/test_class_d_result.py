@@ -55,7 +55,7 @@ def test_heat_sink_figures_come_from_the_corner_that_sets_it():
     hot = []
     for f in (r.f_sw_min, r.f_sw_max):
         p, x = p_clip(f, 4, 20) / 8, 401e-9 * f
-        watts = x * p / (1 - x) + lm4651.P_IDLE_REF - 0.036 * 40 + p / 4 * 2 * 0.3 * (1 + 0.002 * 125)
+        watts = x * p / (1 - x) + lm4651.P_IDLE_REF - 0.036 * 20 + p / 4 * 2 * 0.3 * (1 + 0.002 * 125)
         hot.append(50 + 43 * watts)
     assert max(hot) > 150 and r.needs_heat_sink and r.t_junction_no_sink is None
     assert r.figures["t_junction_no_sink"] == pytest.approx(max(hot))
@@ -70,11 +70,12 @@ def test_heat_sink_figures_come_from_the_corner_that_sets_it():
 def test_iec_thermal_basis_is_an_eighth_of_the_clipping_power_by_hand():
     """The default basis (IEC 62368-1 Annex E: 1/8 of the non-clipped power), at the defaults, by hand from the
     datasheet's figures: eq 9/10 with 25 + 26 + 350 ns, R_DS(on) 300 mOhm at 25 C rising 0.2 %/K to T_j =
-    140 C, the idle loss of 55 % efficiency at 5 W less the LM4651's 36 mA, theta_JC 2.0 + theta_CS 0.2 K/W."""
+    140 C, the idle loss of 55 % efficiency at 5 W less the LM4651's 36 mA (|I+| + |I-|: 20 V x 36 mA = 0.72 W),
+    theta_JC 2.0 + theta_CS 0.2 K/W."""
     r = class_d.design()
     assert r.spec["thermal_basis"] == "iec_1_8" and "1/8 of the clipping power" in r.thermal_basis
     x5 = 361e-9 * 125e3  # the system table's 55 % at 5 W: what is left after conduction and switching is idle
-    idle = 5 / 0.55 - 5 - 2 * 0.2 * 5 / 4 - x5 * 5 / (1 - x5) - 0.036 * 40
+    idle = 5 / 0.55 - 5 - 2 * 0.2 * 5 / 4 - x5 * 5 / (1 - x5) - 0.036 * 20
     need = {}
     for f in (r.f_sw_min, r.f_sw_max):
         p, x = p_clip(f, 4, 20) / 8, 401e-9 * f
@@ -82,7 +83,7 @@ def test_iec_thermal_basis_is_an_eighth_of_the_clipping_power_by_hand():
         need[(140 - 50) / watts - 2.2] = (p, watts)
     assert r.theta_sa_required == pytest.approx(min(need), rel=1e-9)
     assert (r.p_thermal, r.p_dissipation) == pytest.approx(need[min(need)], rel=1e-9)
-    assert 15 < r.p_thermal < 17 and 13 < r.theta_sa_required < 15  # 16.4 W, 13.9 K/W: a small clip-on sink
+    assert 15 < r.p_thermal < 17 and 12 < r.theta_sa_required < 13  # 16.3 W, 12.1 K/W: a small clip-on sink
     full = class_d.design({"thermal_basis": "continuous_sine"})
     assert full.theta_sa_required < 0.7 and full.p_thermal == pytest.approx(full.p_clip, rel=0.05)
     with pytest.raises(InputError, match=r'p_continuous = 50 W .*thermal_basis = "continuous_sine"'):
@@ -95,14 +96,14 @@ def test_heat_sink_is_sized_at_what_the_amplifier_can_deliver():
     need = []
     for f in (small.f_sw_min, small.f_sw_max):
         p, x = p_clip(f, 4, 20), 401e-9 * f
-        need.append(90 / (x * p / (1 - x) + p / 4 * 2 * 0.3 * 1.23 + lm4651.P_IDLE_REF - 0.036 * 40) - 2.2)
+        need.append(90 / (x * p / (1 - x) + p / 4 * 2 * 0.3 * 1.23 + lm4651.P_IDLE_REF - 0.036 * 20) - 2.2)
     assert small.theta_sa_required == pytest.approx(min(need)) and small.theta_sa_required < 0.7
     fixed = class_d.design({"p_out": 50.0, "thermal_basis": "continuous_sine", "p_continuous": 50.0})
     assert fixed.theta_sa_required > 2 * small.theta_sa_required
     # by hand at the fast corner for 50 W: eq 9/10 with 350 ns, 300 mOhm x 1.23 at 140 C, idle less 36 mA
     f = fixed.f_sw_max
     x = 401e-9 * f
-    watts = x * 50 / (1 - x) + 50 / 4 * 2 * 0.3 * (1 + 0.002 * 115) + lm4651.P_IDLE_REF - 0.036 * 40
+    watts = x * 50 / (1 - x) + 50 / 4 * 2 * 0.3 * (1 + 0.002 * 115) + lm4651.P_IDLE_REF - 0.036 * 20
     assert fixed.theta_sa_required == pytest.approx(90 / watts - 2.2)
 
 
@@ -131,14 +132,14 @@ def test_class_d_equals_independent_enumeration(frac, r_load, t_a, thd, sink, pk
 
 
 def test_implausible_designs_still_design_with_warnings():
-    tiny = class_d.design({"p_out": 10.0, "thermal_basis": "continuous_sine", "p_continuous": 10.0, "t_ambient": 0.0,
+    tiny = class_d.design({"p_out": 8.0, "thermal_basis": "continuous_sine", "p_continuous": 8.0, "t_ambient": 0.0,
                            "supply": 15.0})
     assert 30 < tiny.theta_sa_required < 43 - 2.2 and "above about 30 K/W" in tiny.warnings[0]
-    hot = class_d.design({"t_ambient": 70.0, "thermal_basis": "continuous_sine"})
+    hot = class_d.design({"t_ambient": 65.0, "thermal_basis": "continuous_sine"})
     assert hot.theta_sa_required < 0.5 and "below about 0.5 K/W" in hot.warnings[0]
     with pytest.raises(Infeasible) as exc:  # hotter still: say the hottest ambient that works
         class_d.design({"t_ambient": 85.0, "thermal_basis": "continuous_sine"})
-    assert 70 < exc.value.achievable["t_ambient_max"] < 85 and "ambient of at most" in str(exc.value)
+    assert 65 < exc.value.achievable["t_ambient_max"] < 85 and "ambient of at most" in str(exc.value)
     # a hot board designs (its heat sink holds T_j), but the parts are rated to 85 C only (operating ratings): said
     warm = class_d.design({"t_ambient": 90.0})
     assert [w for w in warm.warnings if "operating range" in w] == [

@@ -329,7 +329,7 @@ RDS_ON_MAX_25 = 0.300  # ohm: LM4652 table, R_DS(on) maximum at 25 C
 RDS_TC = (DEVICE["rds_on_hot"] / 0.200 - 1) / (100.0 - 25.0)  # 1/K: 200 mOhm typ at 25 C -> 230 at 100 C
 T_OVERMOD_MAX = 350e-9  # s: no maximum printed; the Example Design's own 350 ns (typical 310 ns)
 I_LIMIT = 10.0  # A: "the inductor ripple current and the peak output current must be lower than 10 amps"
-I_Q_4651 = 36e-3  # A: LM4651 table, quiescent current with the LM4652 not connected (typical)
+I_Q_4651 = 36e-3  # A: LM4651 table, quiescent current with the LM4652 not connected, |I_VCC+| + |I_VEE-| (typical)
 L_REF, C_REF = 50e-6, 5e-6  # H, F: Output Stage Filtering, "a 50 uH inductor and a 5 uF Mylar capacitor"
 #: idle loss at +-20 V from the system table's 55 % efficiency at 5 W (R_DLY = 5 k, 125 kHz, 4 ohm): what is
 #: left of 5/0.55 - 5 W after conduction (200 mOhm typ, cold) and eq 9/10 switching, 3.35 W. The table's I_CQ of
@@ -389,8 +389,9 @@ def p_idle(supply):
 
 
 def p_idle_4652(supply):
-    """The LM4652's share of the idle loss: all of it but the LM4651's own 36 mA x 2 V_s (conservative for
-    the LM4652's heat sink).
+    """The LM4652's share of the idle loss: all of it but the LM4651's own, its 36 mA quiescent current x V_s (the
+    table's figure is |I_VCC+| + |I_VEE-|, as the system table's I_CQ: the two rails' currents summed, so the power
+    from +-V_s is V_s times it, 0.72 W at +-20 V).
 
     Parameters
     ----------
@@ -402,7 +403,7 @@ def p_idle_4652(supply):
     float
         The LM4652's idle loss, W.
     """
-    return p_idle(supply) - I_Q_4651 * 2 * supply
+    return p_idle(supply) - I_Q_4651 * supply
 
 
 def filter_f0(l_out, c_out):
