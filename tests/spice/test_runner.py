@@ -90,11 +90,12 @@ def test_design_spice_adds_the_simulated_corners(tmp_path):
         sp = r[table]["spice"]
         assert all(f"{k}_equation" in sp for k in keys), table
         assert sp["meets_spec"] and sp["agrees"] and sp["differs"] == [], table
-    # the converter's one warning: at the top of the supply range its slowest corner switches just under 20 kHz in
-    # SPICE (D1's falling drop against a dump voltage under a volt; tests/spice/test_spice_converter.py holds it)
+    # the converter: at the top of the supply range D1's falling drop against a dump voltage under a volt slows its
+    # slowest corner by 0.8 % in SPICE; audible_margin (2 %) keeps it above 20 kHz: no warning at the defaults
     said = [w for w in out.stderr.splitlines() if "warning" in w]
-    assert len(said) == 1 and "[converter]" in said[0] and "20 kHz" in said[0], said
-    assert r["converter"]["spice"]["agrees"] and not r["converter"]["spice"]["meets_spec"]
+    assert said == [], said
+    conv = r["converter"]["spice"]
+    assert conv["agrees"] and conv["meets_spec"] and 20e3 <= conv["f"] < r["converter"]["f_sw_min"]
     # the corner of the filter by hand: 1 / (2 pi sqrt(2 L C)) with the chosen L and C
     assert cd["spice"]["f_corner"] == pytest.approx(1 / (2 * math.pi * math.sqrt(2 * cd["l_out"] * cd["c_out"])), rel=0.01)
 

@@ -334,7 +334,8 @@ def design_check(result) -> dict:
             f"{_pct(x['t2_deck'] / x['t2_flat'] - 1, 1)} longer than eq 3's, D1's drop falling with its current against a "
             f"dump voltage V_L+ of only {eng(v_dump, 'V')} at this supply, and t1 {_pct(x['t1_deck'] / x['t1_flat'] - 1, 1)} "
             "(R1's drop ramps from zero where eq 2 holds it at V12(H); the restart). The design holds this floor "
-            f"exactly by eq 1 to 5; f_min = {eng(need, 'Hz')} or more (the {eng(result.f_min_design, 'Hz')} it "
-            f"designed at, times {eng(floor, 'Hz')} over SPICE's figure: L1 scales as 1/f_min) lifts it")
+            f"by eq 1 to 5 with audible_margin = {s['audible_margin'] * 100:g} %; a larger audible_margin, or f_min = "
+            f"{eng(need, 'Hz')} or more (the {eng(result.f_min_design, 'Hz')} it designed at, times {eng(floor, 'Hz')} "
+            "over SPICE's figure: L1 scales as 1/f_min), lifts it")
     out["meets_spec"] = not out["misses"]
     return out

@@ -129,18 +129,20 @@ def test_warnings():
 
 def test_audible_avoid_keeps_every_corner_above_the_audio_band():
     """The default (audible = avoid) raises f_min until the full-load frequency, L1 at +10 % and I_peak,max with
-    V12(H) and V_CE(sat) at +10 % and V_F at -10 % (the slow corner), stays at or above 20 kHz over the whole
-    supply range, here checked on a fine grid by the oracle's own 1 / (t1 + t2); 1 % less f_min would fall below
-    it. A supply reaching V_L+ = 0 in that corner (12 + 2.5 + 0.72 = 15.22 V) or so close that 1 MHz would be
+    V12(H) and V_CE(sat) at +10 % and V_F at -10 % (the slow corner), stays at or above 20 kHz x (1 + 2 %,
+    audible_margin) = 20.4 kHz over the whole supply range, here checked on a fine grid by the oracle's own
+    1 / (t1 + t2); 1 % less f_min would fall below it, and with no margin the floor is 20 kHz exactly. A supply reaching V_L+ = 0 in that corner (12 + 2.5 + 0.72 = 15.22 V) or so close that 1 MHz would be
     needed exits 3 saying so."""
     r = converter.design()
     assert r.spec["f_min"] == 20e3 and r.f_min_design > 20e3
     assert r.warnings[0].startswith("audible = avoid: f_min raised from 20 kHz")
     grid = [8.0 + (14.4 - 8.0) * k / 2000 for k in range(2001)]
     slowest = min(hand_frequency(v, r.l1_nominal * 1.1, r.i_peak_max, vf=0.72, vce=0.55, v12h=0.44) for v in grid)
-    assert slowest >= 20e3 * (1 - 1e-9) and slowest == pytest.approx(20e3, rel=1e-4)
+    assert slowest >= 20.4e3 * (1 - 1e-9) and slowest == pytest.approx(20.4e3, rel=1e-4)
     lower = converter.design({"audible": "warn", "f_min": r.f_min_design / 1.01})
-    assert lower.f_sw_min < 20e3
+    assert lower.f_sw_min < 20.4e3
+    bare = converter.design({"audible_margin": 0.0})
+    assert bare.f_sw_min == pytest.approx(20e3, rel=1e-4) and bare.f_min_design < r.f_min_design
     assert r.coil.current_density <= 5e6  # the defaults meet the current-density limit too
     with pytest.raises(Infeasible, match="V_L\\+ vanishes") as exc:
         converter.design({"v_supply_max": 15.25})

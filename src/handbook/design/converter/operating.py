@@ -222,9 +222,9 @@ def designed_at(s: Table) -> Table:
 
 
 def inaudible_f_min(s: dict) -> float:
-    """The lowest f_min at which the full-load frequency stays at or above :data:`AUDIO_BAND` at every corner
-    over the supply range: every frequency scales with f_min (L1 is inversely proportional to it, the peak
-    currents do not depend on it), so f_min x AUDIO_BAND / f_sw_min, re-checked through the operating point
+    """The lowest f_min at which the full-load frequency stays at or above :data:`AUDIO_BAND` (1 + ``audible_margin``)
+    at every corner over the supply range: every frequency scales with f_min (L1 is inversely proportional to it,
+    the peak currents do not depend on it), so f_min x that floor / f_sw_min, re-checked through the operating point
     (R1's series rounding) and nudged up until it holds.
 
     Parameters
@@ -251,12 +251,12 @@ def inaudible_f_min(s: dict) -> float:
                          f"full-load frequency falls to zero whatever f_min; keep v_supply_max below it (or audible = "
                          f"warn)", {"v_supply_max": top})
     f_high = next(p.high for p in TABLES[TABLE] if p.name == "f_min")
-    f = s["f_min"]
+    f, floor = s["f_min"], AUDIO_BAND * (1 + s["audible_margin"])
     for _ in range(20):
         low = operating_point({**dict(s), "f_min": f})["f_sw_min"]
-        if low >= AUDIO_BAND * (1 - 1e-9):
+        if low >= floor * (1 - 1e-9):
             return f
-        f = f * AUDIO_BAND / low * (1 + 1e-6)
+        f = f * floor / low * (1 + 1e-6)
         if f > f_high:
             break
     raise Infeasible(TABLE, f"audible = avoid: the full-load frequency stays above {eng(AUDIO_BAND, 'Hz')} up to "

@@ -448,8 +448,8 @@ def design(spec: dict | None = None) -> ConverterResult:
         raise infeasible(s, every)
     notes = () if s["f_min"] == given["f_min"] else (
         f"audible = avoid: f_min raised from {eng(given['f_min'], 'Hz')} to {eng(s['f_min'], 'Hz')} so that the full-load "
-        f"frequency stays at or above {eng(AUDIO_BAND, 'Hz')} at every corner up to v_supply_max = "
-        f"{eng(s['v_supply_max'], 'V')} (audible = warn keeps the f_min given)",)
+        f"frequency stays at or above {eng(AUDIO_BAND, 'Hz')} (by {given['audible_margin'] * 100:g} %, audible_margin) "
+        f"at every corner up to v_supply_max = {eng(s['v_supply_max'], 'V')} (audible = warn keeps the f_min given)",)
     smaller = [c for c in every if c.ve < chosen.ve * (1 - 1e-9)]
     return ConverterResult(
         spec=given, f_min_design=s["f_min"], alpha=op["alpha"], t1=op["t1"], t2=op["t2"], i_peak=op["i_peak"],
