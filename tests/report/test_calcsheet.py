@@ -153,8 +153,8 @@ def _coil(r, s):
     flux = {"L_1": r.l1_max, "I_{L(peak)}": r.i_peak_max, "N": r.turns}
     return [("tca5600-gap", None, {"N": r.turns, "L_1": r.l1_nominal, r"\mathcal{R}_{core}": r_core},
              coil.gap_reluctance(shape, r.gap), 1),
-            ("tca5600-b-peak", None, {**flux, "A_e": shape["a_centre"]}, r.b_peak, 1),
-            ("tca5600-b-peak", None, {**flux, "A_e": shape["a_min"]}, r.b_peak_min_area, 1),
+            ("tca5600-b-peak", None, {**flux, "A": shape["a_centre"]}, r.b_peak, 1),
+            ("tca5600-b-peak", None, {**flux, "A": shape["a_min"]}, r.b_peak_min_area, 1),
             ("tca5600-winding", None, {"I_{rms}": r.i_rms, "N": r.turns, r"\ell_{MLT}": shape["mlt"], "r'": per_m},
              r.winding_loss, 1),
             ("tca5600-rise", None, {"R_{th}": shape["r_th"], "P_{Cu}": r.winding_loss, "P_{core}": r.core_loss},
@@ -226,7 +226,7 @@ def test_each_equation_step_evaluates_to_the_designs_number(designed, spec_name,
         else:
             assert eng(expected) in text or eng(expected, "X").split(" ")[0] in text, (text, expected)
         for name, v in inputs.items():  # every value the record takes is shown substituted
-            v_shown = v * RPM if name in ("N_{min}",) else v * 1e6 if name == "A_e" else v  # rpm; mm²
+            v_shown = v * RPM if name in ("N_{min}",) else v * 1e6 if name == "A" else v  # rpm; mm²
             assert any(text in st.substituted_tex for text in _number_shown(v_shown)), (eq_id, name, v_shown,
                                                                                           st.substituted_tex)
 

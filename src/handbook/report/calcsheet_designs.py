@@ -293,11 +293,17 @@ def _class_d_heat(r, s) -> list:
                       errata=("lm4651-overmod",)),
         equation_step(f"Switching dissipation at {r.thermal_basis} ({_at(p_th, 'W')})", "lm4651-eq10",
                       {"x": (x, "1"), "P_{out}": (p_th, "W")}, (p_sw, "W")),
-        equation_step(f"Conduction dissipation, R_DS(on) at its maximum at T_j = {t_target:g} °C", "lm4651-conduction",
+        equation_step(f"Conduction dissipation, R_DS(on) at its maximum at T_j = {t_target:g} °C: "
+                      f"{_at(s['rds_on_25'], 'Ω')} × (1 + {lm.RDS_TC * 100:.2g} %/K × ({t_target:g} − 25) K) = "
+                      f"{_at(rds, 'Ω')} (the rise: the Example Design's 230 mΩ at 100 °C against the table's 200 mΩ "
+                      "at 25 °C)", "lm4651-conduction",
                       {"P_{out}": (p_th, "W"), "R_L": (s["r_load"], "Ω"), "R_{DS(on)}": (rds, "Ω")}, (p_cond, "W"),
                       errata=("lm4651-t-rds",)),
         words(f"LM4652 dissipation: switching {_at(p_sw, 'W')} + conduction {_at(p_cond, 'W')} + idle "
-              f"{_at(p_idle, 'W')} (the quiescent loss less the LM4651's share) = {_at(p_set, 'W')}",
+              f"{_at(p_idle, 'W')} = {_at(p_set, 'W')}; the idle loss is what the system table's 55 % at 5 W leaves "
+              f"after conduction and switching, {_at(lm.P_IDLE_REF, 'W')} at ±20 V (× {s['supply']:g} V / 20 V: "
+              f"{_at(lm.p_idle(s['supply']), 'W')}), less the LM4651's own 36 mA (|I_VCC+| + |I_VEE−|) × "
+              f"{s['supply']:g} V = {_at(lm.I_Q_4651 * s['supply'], 'W')}",
               (p_set, "W"), f"{here}: thermal model (model.heat)"),
         equation_step(f"Heat sink needed to hold T_j at {t_target:g} °C", "lm4651-eq11",
                       {"T_{jmax}": (t_target, "°C"), "T_{a}": (s["t_ambient"], "°C"), "P_D": (p_set, "W"),
@@ -329,10 +335,16 @@ def converter(r) -> list:
     list of Step
         The steps, eq 1 first.
     """
-    from ..design.converter import corner
+    from ..design.converter import corner, r1_drift, r1_ends
+    from ..design.converter.coil import coil_voltages
 
     s = r.spec
     here = "handbook.design.converter"
+    weak, slow = corner(s, "weak"), corner(s, "slow")
+    w_plus, w_minus = coil_voltages(weak, s["v_supply_min"])
+    w_peak = weak["v12h"] / r.r1_worst
+    s_plus, s_minus = coil_voltages(slow, s["v_supply_min"])
+    drift, r_hi = r1_drift(s), r1_ends(s)[1]
     v = {"V_{out2}": (s["v_out"], "V"), "V_{(9-8)}": (s["v_regulator_drop"], "V"), "V_F": (s["v_f"], "V"),
          "V_{CC2}": (s["v_supply_min"], "V"), "V_{CE(sat)}": (s["v_ce_sat"], "V"), "V_{12(H)}": (s["v12h"], "V")}
     pick = lambda *names: {k: v[k] for k in names}  # noqa: E731
@@ -351,16 +363,22 @@ def converter(r) -> list:
                       {"V_{L-}": (r.vl_minus, "V"), "t_1": (r.t1, "s"), "I_{L(peak)}": (r.i_peak, "A")}, (r.l1, "H")),
         equation_step("Current-sense resistor", "tca5600-eq6a",
                       {"V_{12(H)}": (s["v12h"], "V"), "I_{L(peak)}": (r.i_peak, "A")}, (r.r1, "Ω")),
-        words(f"Eq 1 to 6a again in the device corner that delivers least ({_figures(corner(s, 'weak'))}, "
-              f"±{_pct(s['device_spread'])}): R1 = {_at(r.r1_worst, 'Ω')}", (r.r1_worst, "Ω"),
+        words(f"Eq 1 to 6a again in the device corner that delivers least ({_figures(weak)}, "
+              f"±{_pct(s['device_spread'])}): V_L+ = {_at(w_plus, 'V')}, V_L− = {_at(w_minus, 'V')}, "
+              f"I_L(peak) = 2 · {_at(s['i_out'], 'A')} · (1 + {w_plus:.4g} / {w_minus:.4g}) = {_at(w_peak, 'A')}, "
+              f"R1 = {_at(weak['v12h'], 'V')} / {_at(w_peak, 'A')} = {_at(r.r1_worst, 'Ω')}", (r.r1_worst, "Ω"),
               f"{here}: device_spread (assumed; no public TCA5600 characteristics)"),
-        words(f"{s['r1_series']} R1 at or below {_at(r.r1_worst, 'Ω')} / (1 + {s['r1_tolerance']:g}) = "
-              f"{_at(r.r1_worst / (1 + s['r1_tolerance']), 'Ω')}: {_at(r.r1_part, 'Ω')}; at its high end in that "
-              f"corner it delivers {_at(r.i_out_least, 'A')}; the peak current reaches {_at(r.i_peak_max, 'A')} with "
-              f"V12(H) high and R1 at its low end", (r.r1_part, "Ω"), f"{here}: {s['r1_series']} series pick"),
-        words(f"Inductance to wind so that L1 at +{_pct(s['a_l_tolerance'])} A_L still runs at f_min at the highest "
-              f"peak current in the slow corner ({_figures(corner(s, 'slow'))}): {_at(r.l1_nominal, 'H')}",
-              (r.l1_nominal, "H"), f"{here}: A_L tolerance, device_spread"),
+        words(f"{s['r1_series']} R1 at or below {_at(r.r1_worst, 'Ω')} over R1's high end, (1 + {s['r1_tolerance']:g}) "
+              f"for its tolerance × (1 + {drift:.3g}) for its drift to {s['t_ambient']:g} °C at "
+              f"{s['r1_tempco'] * 1e6:g} ppm/K: {_at(r.r1_worst / r_hi, 'Ω')}, so {_at(r.r1_part, 'Ω')}; at that high end "
+              f"in that corner it delivers {_at(r.i_out_least, 'A')}; the peak current reaches {_at(r.i_peak_max, 'A')} "
+              "with V12(H) high and R1 at its low end", (r.r1_part, "Ω"), f"{here}: {s['r1_series']} series pick"),
+        words(f"Inductance to wind: in the slow corner ({_figures(slow)}) at the lowest supply, L1 at +"
+              f"{_pct(s['a_l_tolerance'])} A_L runs at f_min with the highest peak current when L1,max = 1 / (f_min · "
+              f"I_pk,max · (1/V_L− + 1/V_L+)) = 1 / ({_at(r.f_min_design, 'Hz')} · {_at(r.i_peak_max, 'A')} · (1/"
+              f"{_at(s_minus, 'V')} + 1/{_at(s_plus, 'V')})) = {_at(r.l1_max, 'H')}; wound for it / (1 + "
+              f"{s['a_l_tolerance']:g}) = {_at(r.l1_nominal, 'H')}", (r.l1_nominal, "H"),
+              f"{here}: A_L tolerance, device_spread"),
         words(f"Smallest core of the candidate set meeting every limit: {r.core_shape} in {r.core_material}, "
               f"{r.turns} turns, {r.wire}", (f"{r.core_shape}, {r.turns} turns", ""),
               f"{here}: exact enumeration of PyOpenMagnetics' cores, smallest first"),
@@ -396,10 +414,10 @@ def _coil(r, s) -> list:
         words(f"PyOpenMagnetics' gap model (all of the core's gaps against the centre gap's length) inverted: centre "
               f"gap {_at(r.gap, 'm')}; A_L = L1 / N² = {_at(r.a_l, 'H')}", (r.gap, "m"),
               f"{here}: PyOpenMagnetics gap reluctance table, log-log interpolation"),
-        equation_step("Peak flux density over the centre column, at the highest peak current and L1 at its high end",
-                      "tca5600-b-peak", {**flux, "A_e": (shape["a_centre"], "m²")}, (r.b_peak, "T")),
-        equation_step("The same over the core's narrowest section, where saturation is judged", "tca5600-b-peak",
-                      {**flux, "A_e": (shape["a_min"], "m²")}, (r.b_peak_min_area, "T")),
+        equation_step("Peak flux density over the centre column (A its area), at the highest peak current and L1 at "
+                      "its high end", "tca5600-b-peak", {**flux, "A": (shape["a_centre"], "m²")}, (r.b_peak, "T")),
+        equation_step("The same over the core's narrowest section (A its area), where saturation is judged",
+                      "tca5600-b-peak", {**flux, "A": (shape["a_min"], "m²")}, (r.b_peak_min_area, "T")),
         words(f"Saturation margin at {t_coil:.3g} °C: 1 − {_at(r.b_peak_min_area, 'T')} / {_at(b_sat, 'T')} = "
               f"{_pct(r.saturation_margin)} (at least {_pct(s['saturation_margin_min'])})", (r.saturation_margin, "%"),
               f"{here}: {r.core_material}'s saturation against temperature, PyOpenMagnetics"),
@@ -408,7 +426,9 @@ def _coil(r, s) -> list:
                       {"I_{rms}": (r.i_rms, "A"), "N": (r.turns, "1"), r"\ell_{MLT}": (shape["mlt"], "m"),
                        "r'": (per_m, "Ω/m")}, (r.winding_loss, "W")),
         words(f"Core loss by the improved Generalised Steinmetz Equation with {r.core_material}'s coefficients, at the "
-              f"largest flux swing (L1,max I_pk,max / (N A_e) = {_at(r.l1_max * r.i_peak_max / (r.turns * shape['ae']), 'T')}), "
+              f"largest flux swing over the core's effective area A_e = {_at(shape['ae'], 'm²')} (the iGSE works on the "
+              f"effective parameters): L1,max I_pk,max / (N A_e) = "
+              f"{_at(r.l1_max * r.i_peak_max / (r.turns * shape['ae']), 'T')}, "
               f"the largest over the supply range and the device corners: {_at(r.core_loss, 'W')}", (r.core_loss, "W"),
               f"{here}: iGSE, PyOpenMagnetics' Steinmetz ranges (coil.core_loss)"),
         equation_step("Temperature rise of the coil", "tca5600-rise",

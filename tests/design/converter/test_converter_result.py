@@ -131,8 +131,9 @@ def test_audible_avoid_keeps_every_corner_above_the_audio_band():
     """The default (audible = avoid) raises f_min until the full-load frequency, L1 at +10 % and I_peak,max with
     V12(H) and V_CE(sat) at +10 % and V_F at -10 % (the slow corner), stays at or above 20 kHz x (1 + 2 %,
     audible_margin) = 20.4 kHz over the whole supply range, here checked on a fine grid by the oracle's own
-    1 / (t1 + t2); 1 % less f_min would fall below it, and with no margin the floor is 20 kHz exactly. A supply reaching V_L+ = 0 in that corner (12 + 2.5 + 0.72 = 15.22 V) or so close that 1 MHz would be
-    needed exits 3 saying so."""
+    1 / (t1 + t2); 1 % less f_min would fall below it, and with no margin the floor is 20 kHz exactly. A supply
+    reaching V_L+ = 0 in that corner (12 + 2.5 + 0.72 = 15.22 V) or so close that 1 MHz would be needed exits 3
+    saying so."""
     r = converter.design()
     assert r.spec["f_min"] == 20e3 and r.f_min_design > 20e3
     assert r.warnings[0].startswith("audible = avoid: f_min raised from 20 kHz")

@@ -65,7 +65,7 @@ def coil() -> list[Equation]:
     """
     A, H, OHM, W, K, M = u.ampere, u.henry, u.ohm, u.watt, u.kelvin, u.meter
     L, N, Rc, Rg, I, Ae, B, phi, Irms, mlt, rp, Pcu, Pfe, Rth, dT = sp.symbols(
-        r"L_1 N \mathcal{R}_{core} \mathcal{R}_{gap} I_{L(peak)} A_e B_{peak} \Phi I_{rms} \ell_{MLT} r' P_{Cu} "
+        r"L_1 N \mathcal{R}_{core} \mathcal{R}_{gap} I_{L(peak)} A B_{peak} \Phi I_{rms} \ell_{MLT} r' P_{Cu} "
         r"P_{core} R_{th} \Delta{}T", positive=True)
     where = f"{NAME} (the design's coil; no formula printed)"
     return [
@@ -77,7 +77,8 @@ def coil() -> list[Equation]:
         Equation(id="tca5600-b-peak", source=where, title="Peak flux density", lhs=B, lhs_unit=u.tesla,
                  printed=L * I / (N * Ae), derived=sp.solve(sp.Eq(N * phi, L * I), phi)[0] / Ae,
                  units={L: H, I: A, N: sp.Integer(1), Ae: M ** 2},
-                 law="flux linkage: N Phi = L I, and B = Phi / A over the section the flux crosses"),
+                 law="flux linkage: N Phi = L I, and B = Phi / A over the section A the flux crosses (the centre "
+                     "column, the narrowest section, or the core's effective area A_e)"),
         Equation(id="tca5600-winding", source=where, title="Winding loss", lhs=Pcu, lhs_unit=W,
                  printed=Irms ** 2 * N * mlt * rp, derived=Irms ** 2 * (N * mlt * rp),
                  units={Irms: A, N: sp.Integer(1), mlt: M, rp: OHM / M},
