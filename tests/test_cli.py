@@ -278,3 +278,13 @@ def test_spice_figures_in_text_carry_their_own_units():
     assert _spice_value("corners_searched", 96) == "96 searched" and _spice_value("f_rtol", 0.001) == "±0.1 %"
     assert _spice_value("misses", ["one", "two"]) == "one; two" and _spice_value("differs", []) == "none"
     assert _spice_value("ripple_at_load", 0.02954) == "29.54 mV rms" and _spice_value("t_wd_min", 0.00237) == "2.37 ms"
+
+
+def test_the_spec_hash_tells_a_partial_spec_from_the_full_one():
+    """A [class_d]-only spec and one with every table at the same (default) values design different things: their
+    hashes differ; the same spec read twice hashes the same."""
+    from handbook.design import spec as specmod
+
+    one = specmod.traced(specmod.parse({"class_d": {}}))["spec_sha256"]
+    every = specmod.traced(specmod.parse({t: {} for t in ("commutation", "current_limiter", "class_d", "converter")}))
+    assert one != every["spec_sha256"] and one == specmod.traced(specmod.parse({"class_d": {}}))["spec_sha256"]

@@ -229,7 +229,8 @@ def traced(spec: Spec) -> dict:
     Returns
     -------
     dict
-        ``version`` (str), ``spec_sha256`` (hex of the canonical JSON of ``spec``), ``spec`` ({table: {key:
+        ``version`` (str), ``spec_sha256`` (hex of the canonical JSON of ``spec`` and the tables it asked for),
+        ``spec`` ({table: {key:
         value}}, after defaults), ``asked`` (the tables the spec wrote; all four when it wrote none; the others
         are the notes' defaults) and ``units`` ({table: {output key: unit}}; "1" a plain number, "fraction" a
         fraction, "" text, "degC" degrees Celsius).
@@ -240,7 +241,10 @@ def traced(spec: Spec) -> dict:
     from ..core.version import VERSION
 
     read = {t: dict(spec.tables[t]) for t in spec.tables}
-    canonical = json.dumps(read, sort_keys=True, default=str, separators=(",", ":"))
+    # the tables asked for are part of what was designed (a [class_d]-only spec designs one circuit of the same
+    # defaults): hashed with the values
+    canonical = json.dumps({"asked": sorted(spec.asked), "spec": read}, sort_keys=True, default=str,
+                           separators=(",", ":"))
     unit = {"%": "fraction", "C": "degC"}  # a fraction stored, a percentage only when shown
     return {"version": VERSION, "spec_sha256": hashlib.sha256(canonical.encode()).hexdigest(), "spec": read,
             "asked": list(spec.asked), "units": {t: {o.key: unit.get(o.unit, o.unit) for o in outs}
