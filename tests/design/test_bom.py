@@ -3,6 +3,7 @@
 designators unique across the sheets, only the tables a spec asked for, and a CSV written whole or not at all."""
 import csv
 import json
+import math
 import os
 import subprocess
 import sys
@@ -91,6 +92,12 @@ def test_every_rating_covers_its_worst_case_stress(case):
         row = table[ref]
         assert row["voltage_rating"] * HALF >= 18.0 and ("film" not in row["technology"] or row["voltage_rating"] >= 63)
     assert table["A3-C1"]["voltage_rating"] * HALF >= 2 * cd.spec["supply"]
+    # C_BYP's rms current: the clipping sine (sqrt(P_clip R_L) V rms) at the top of the band, C 5 % high, with the
+    # coils' ripple (V_s / (2 L f) peak to peak at the slow corner, L low; rms a 2 sqrt(3)th), at 50 %
+    sd = cd.spec
+    i_c = math.hypot((cd.p_clip * sd["r_load"]) ** 0.5 * 2 * math.pi * sd["f_audio"] * cd.c_out * (1 + sd["c_tolerance"]),
+                     sd["supply"] / (2 * cd.l_out * (1 - sd["l_tolerance"]) * cd.f_sw_min) / (2 * math.sqrt(3)))
+    assert table["A3-C1"]["current_rating"] * HALF == pytest.approx(i_c, rel=1e-9)
     assert table["A3-L1"]["current_rating"] >= 1.2 * float(cd.figures["i_peak"])
     assert table["A3-L1"]["current_rating"] != cd.spec["i_sat"]  # the design's peak, not the input copied
     assert table["A4-L1"]["current_rating"] > cv.i_peak_max

@@ -12,6 +12,7 @@ and the reason in one line.
 from __future__ import annotations
 
 import csv
+import math
 import os
 import tempfile
 from pathlib import Path
@@ -235,6 +236,13 @@ def class_d_rows(cd) -> list[dict]:
     v_c = 2 * s["supply"]
     v_rating = ratings.capacitor_voltage(v_c, film=True)
     pin = PIN_VOLTAGE ** 2  # R_OSC and R_DLY each carry at most PIN_VOLTAGE
+    # C_BYP's rms current: the clipping sine across it at the top of the band (C high, the fast corner's clipping)
+    # and the coils' triangular ripple at the slow corner with L low, which the capacitor takes (D = 1/2: V_s/(2 L f)
+    # peak to peak, rms a 2 sqrt(3)th of it)
+    c_hi, l_lo = cd.c_out * (1 + s["c_tolerance"]), cd.l_out * (1 - s["l_tolerance"])
+    i_audio_c = (cd.p_clip * s["r_load"]) ** 0.5 * 2 * math.pi * s["f_audio"] * c_hi
+    i_ripple_c = s["supply"] / (2 * l_lo * cd.f_sw_min) / (2 * 3 ** 0.5)
+    i_c1 = math.hypot(i_audio_c, i_ripple_c)
     supply_text = (f"supply V+ + V− {LM4651_SUPPLY[0]:g} V to {LM4651_SUPPLY[1]:g} V, T_A −40 °C to +85 °C (LM4651/"
                    f"LM4652 operating ratings): ±{s['supply']:g} V is {v_c:g} V, at {t_a:g} °C ambient")
     return [
@@ -244,8 +252,11 @@ def class_d_rows(cd) -> list[dict]:
         _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "", voltage=LM4651_SUPPLY[1],
              stress=v_c, current=lm4651.I_LIMIT,
              rating_text=f"{supply_text}; output current: the LM4651's limit, which the datasheet's R_SCKT text asks to "
-                         f"keep at 10 A, above the coils' worst peak {eng(i_peak, 'A')}; T_j {cd.t_junction:.4g} °C "
-                         "with HS1, below 150 °C",
+                         f"keep at 10 A, above the coils' worst peak {eng(i_peak, 'A')}; its maximum saturation drain "
+                         f"current is 8 A minimum, 10 A typical (LM4652 table, at V_GS 6 V, V_DS 10 V)"
+                         + (", below that peak: the datasheet's own 125 W, 50 µH example peaks near 8.7 A too"
+                            if i_peak > 8.0 else "")
+                         + f"; T_j {cd.t_junction:.4g} °C with HS1, below 150 °C",
              reason="the output stage; its heat sink is HS1"),
         _resistor(sheet, "R1", "R_OSC, oscillator", cd.r_osc, s["r_tolerance"], s["r_osc_series"], pin / cd.r_osc, t_a,
                   f"sets {eng(cd.f_sw, 'Hz')} by eq 5 ({eng(cd.f_sw_min, 'Hz')} to {eng(cd.f_sw_max, 'Hz')} at the "
@@ -261,10 +272,12 @@ def class_d_rows(cd) -> list[dict]:
                          f"{eng(i_rms, 'A')} at the thermal basis; DCR ≤ {eng(s['l_dcr'] * cd.l_out, 'Ω')}",
              reason=f"{s['l_series']} value; the filter's corner {eng(cd.f_corner, 'Hz')}"),
         _row(sheet, "C1", "C_BYP, output filter capacitor", cd.c_out, "F", s["c_tolerance"], voltage=v_rating,
-             stress=v_c, technology="polyester or polypropylene film (the datasheet's Mylar)",
-             package=_film_package(cd.c_out), tempco="",
+             current=i_c1 / ratings.DERATING, stress=v_c, technology="polyester or polypropylene film (the datasheet's "
+             "Mylar)", package=_film_package(cd.c_out), tempco="",
              rating_text=f"{v_rating:g} V: the bridge swings ±{s['supply']:g} V per side, up to {v_c:g} V across "
-                         "it, 50 % derating",
+                         f"it, 50 % derating; rms current ≥ {eng(i_c1 / ratings.DERATING, 'A')}: it carries "
+                         f"{eng(i_c1, 'A')} (the clipping sine at the top of the band, {eng(i_audio_c, 'A')}, and the "
+                         f"coils' ripple, {eng(i_ripple_c, 'A')}), 50 % derating",
              reason=f"{s['c_series']} value; across the load"),
         _row(sheet, "HS1", "LM4652 heat sink", f"≤ {cd.theta_sa_required:.3g} K/W", "K/W",
              rating_text=f"θ_SA at most {cd.theta_sa_required:.3g} K/W: the LM4652 dissipating {eng(p_set, 'W')} at "
@@ -310,8 +323,9 @@ def converter_rows(cv) -> list[dict]:
                          f"V_CC2 up to {s['v_supply_max']:g} V, its switch off at {eng(v_off, 'V')} (C2 plus D1's drop) "
                          f"and carrying {eng(cv.i_peak_max, 'A')} peak",
              reason="the converter of the excerpt's figure 13"),
-        _row(sheet, "C2", "storage capacitor at the regulator's input", C2_FIGURE_13, "F", voltage=v_c2_rating,
-             stress=v_c2, technology="aluminium electrolytic, low ESR", package="radial",
+        _row(sheet, "C2", "storage capacitor at the regulator's input", C2_FIGURE_13, "F", 0.2, voltage=v_c2_rating,
+             stress=v_c2, technology=f"aluminium electrolytic, low ESR, 105 °C class ({t_a:g} °C ambient)",
+             package="radial",
              rating_text=f"{v_c2_rating:g} V: it holds V_out2 + V(9-8) = {eng(v_c2, 'V')}, 50 % derating; ripple "
                          f"current at least {eng(cv.i_rms, 'A')} rms (the coil's whole triangle, an upper bound)",
              reason="figure 13's value, not sized by the design; the excerpt asks C2 ≫ C7 (0.22 µF) to limit the "
