@@ -21,7 +21,7 @@ from ..core.units import eng
 from . import ratings
 
 #: design table -> (sheet prefix, the circuit)
-SHEETS = {"commutation": ("A1", "TDA5144 timers (AN94002 2.1)"),
+SHEETS = {"commutation": ("A1", "TDA5143/TDA5144 timers (AN94002 2.1)"),
           "current_limiter": ("A2", "op-amp current limiter (AN94002 figure 3)"),
           "class_d": ("A3", "LM4651/LM4652 class-D amplifier"),
           "converter": ("A4", "TCA5600 dc/dc converter")}

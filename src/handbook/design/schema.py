@@ -181,12 +181,12 @@ def _converter() -> tuple[Param, ...]:
                       "resistance)", cite="assumption: 85 C ambient + 40 K keeps the ferrite and the winding at "
                                           "or below a 125 C-class bobbin's rating"),
         Param(name="fill_factor", default=0.5, unit="1", high=1.0, **_POS,
-              meaning="fraction of the bobbin's winding window the turns may fill, counted as N x (outer "
-                      "diameter)^2", cite="assumption: hand or machine layer winding of enamelled round wire"),
+              meaning="fraction of the bobbin's winding window the turns may fill, counted as N × (outer "
+                      "diameter)²", cite="assumption: hand or machine layer winding of enamelled round wire"),
         Param(name="current_density_max", default=5e6, unit="A/m^2", high=1e8, **_POS,
               meaning="largest rms current density in the copper, a limit: a candidate whose thickest fitting wire "
-                      "carries more fails, so the coil grows to meet it (5 A/mm^2 = 5e6)",
-              cite="assumption: the usual 3 to 5 A/mm^2 of small, naturally cooled windings, which also keeps the "
+                      "carries more fails, so the coil grows to meet it (5 A/mm² = 5e6 A/m²)",
+              cite="assumption: the usual 3 to 5 A/mm² of small, naturally cooled windings, which also keeps the "
                    "copper loss the temperature rise counts modest"),
         Param(name="audible_margin", default=0.02, unit="1", low=0.0, high=0.5,
               meaning="with audible = 'avoid', how far above 20 kHz the full-load frequency is held by eq 1 to 5, "

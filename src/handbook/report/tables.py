@@ -159,6 +159,10 @@ def shown_value(v, unit: str) -> str:
         return "< 0.01 K" if 0 <= v < 0.005 else f"{v:.3g} K" if abs(v) < 10 else f"{v:.1f} K"
     if unit in ("F", "ohm", "A", "W", "V", "Hz", "H", "s", "m", "T", "V/K", "N m/A"):  # 0.015 N m/A: 15 mN m/A
         return eng(v, unit.replace("ohm", "Ω"))
+    if unit == "1/K" and isinstance(v, float):  # a temperature coefficient: 100 ppm/K, not 0.0001 1/K
+        return f"{v * 1e6:.4g} ppm/K"
+    if unit == "A/m^2" and isinstance(v, float):  # a current density as windings are rated: 5 A/mm²
+        return f"{v / 1e6:.4g} A/mm²"
     if unit == "kg m^2" and isinstance(v, float) and v > 0:  # no prefix on kg: 72e-6 kg m^2 reads 72 × 10⁻⁶ kg m²
         r = float(f"{v:.4g}")
         power = int(math.floor(math.log10(r) / 3) * 3) if r < 1e-3 else 0

@@ -43,7 +43,7 @@ def test_flux_density_over_the_centre_column_from_the_cores_geometry(pom, result
 def test_no_smaller_candidate_meets_the_spec(pom):
     """A separate enumeration over every smaller candidate than the choice at i_out = 0.3 A, from
     PyOpenMagnetics' geometry, wires and saturation: even with the fewest turns saturation at 85 C allows and
-    copper at 85 C alone (no core loss), each runs above 40 K, its thickest fitting wire above 5 A/mm^2, or the
+    copper at 85 C alone (no core loss), each runs above 40 K, its thickest fitting wire above 5 A/mm², or the
     turns do not fit."""
     r = converter.design({"i_out": 0.3, "audible": "warn"})
     shapes = converter_cores.load()["shapes"]

@@ -63,8 +63,8 @@ def test_r1_and_l1_at_their_tolerances_and_the_device_spread_by_hand(result):
     assert result.f_sw_max == pytest.approx(hand_frequency(8.095, l_max / 1.1 * 0.9, i_min, **fast), rel=1e-9)
     assert result.f_sw_max == pytest.approx(31592, rel=1e-3)
     # the coil: I_rms = 264.6 mA / sqrt(3) = 152.7 mA; the smaller cores' thickest fitting wire would carry more than
-    # 5 A/mm^2 (EFD 10/5/3 fits 0.16 mm: 152.7 mA in 0.02011 mm^2 is 7.60 A/mm^2), so it grows: EP 10 in N87,
-    # 64 turns of 0.265 mm, pi x 0.1325^2 = 0.05515 mm^2, 2.77 A/mm^2
+    # 5 A/mm² (EFD 10/5/3 fits 0.16 mm: 152.7 mA in 0.02011 mm^2 is 7.60 A/mm²), so it grows: EP 10 in N87,
+    # 64 turns of 0.265 mm, pi x 0.1325^2 = 0.05515 mm^2, 2.77 A/mm²
     assert (result.core_shape, result.core_material, result.turns, result.wire) == ("EP 10", "N87", 64,
                                                                                    "Round 0.265 - Grade 1")
     i_rms = i_max / 3 ** 0.5
@@ -78,9 +78,9 @@ def test_more_current_needs_a_larger_core_and_too_much_is_infeasible():
     large = converter.design({"i_out": 0.3, "audible": "warn"})
     assert small.coil.ve < large.coil.ve
     # 0.287 ohm (E96 below 0.3 A's 0.2940 ohm / 1.01606), I_peak,max = 0.44 / (0.287 x 0.99 x 0.994) = 1.558 A,
-    # 0.8995 A rms: RM 6's thickest fitting wire, 0.45 mm, carries 0.8995 / 0.1590 = 5.66 A/mm^2
+    # 0.8995 A rms: RM 6's thickest fitting wire, 0.45 mm, carries 0.8995 / 0.1590 = 5.66 A/mm²
     assert large.binding.startswith("current density (the next smaller core, RM 6: in 3C90 its thickest fitting wire "
-                                    "(Round 0.45 - Grade 1) carries 5.66 A/mm^2")
+                                    "(Round 0.45 - Grade 1) carries 5.66 A/mm²")
     with pytest.raises(Infeasible) as exc:
         converter.design({"i_out": 5.0, "audible": "warn"})
     text = str(exc.value)
@@ -114,7 +114,7 @@ def test_warnings():
     default = converter.design(warn).warnings
     assert any("audio band" in w and "14.4 V" in w and "4.345 kHz" in w for w in default)
     assert any("extrapolated" in w for w in default)  # 20 kHz and below, under the 25 kHz fits
-    assert not any("A/mm^2" in w for w in default)  # the current density is a limit now, not a warning
+    assert not any("A/mm²" in w for w in default)  # the current density is a limit now, not a warning
     quiet = converter.design({"f_min": 40e3, "v_supply_max": 8.0}).warnings
     assert not any("audio band" in w or "extrapolated" in w for w in quiet)
     # VCC2 up to the output side: the frequency falls to zero

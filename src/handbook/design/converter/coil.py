@@ -439,8 +439,8 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
         limits.append("temperature rise")
     density = op["i_rms"] / (math.pi * wire["d_cu"] ** 2 / 4)
     if density > s["current_density_max"] * (1 + 1e-9):
-        fails.append(f"its thickest fitting wire ({wire['name']}) carries {density / 1e6:.3g} A/mm^2, above "
-                     f"{s['current_density_max'] / 1e6:.3g} A/mm^2")
+        fails.append(f"its thickest fitting wire ({wire['name']}) carries {density / 1e6:.3g} A/mm², above "
+                     f"{s['current_density_max'] / 1e6:.3g} A/mm²")
         limits.append("current density")
     return Coil(**base, b_sat=sat, saturation_margin=margin, wire=wire["name"], wire_diameter=wire["d_cu"],
                 current_density=density, r_dc=r_dc, core_loss=p_core,

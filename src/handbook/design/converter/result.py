@@ -134,7 +134,7 @@ class ConverterResult(Result):
     b_peak: float = reported('T', 'peak flux density, centre column (highest peak current)')
     b_peak_min_area: float = reported('T', 'peak flux density, narrowest section (the one saturation is judged at)')
     core_loss: float = reported('W', 'core loss (iGSE)')
-    winding_loss: float = reported('W', 'winding loss (I_rms^2 R_dc, copper at its hottest)')
+    winding_loss: float = reported('W', 'winding loss (I_rms² R_dc, copper at its hottest)')
     temperature_rise: float = reported('K', 'temperature rise')
     saturation_margin: float = reported('%', 'saturation margin (narrowest section, hot, highest I_peak)')
     binding: str = reported('', 'binding')
@@ -397,7 +397,7 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
     skin = math.sqrt(RHO_CU * (1 + ALPHA_CU * 80) / (math.pi * f_top * MU0))
     if c.wire_diameter is not None and c.wire_diameter > 2 * skin:
         out.append(f"wire {eng(c.wire_diameter, 'm')} is thicker than twice the skin depth at "
-                   f"{eng(op['f_sw_max'], 'Hz')} ({eng(skin, 'm')}): the copper loss (I_rms^2 R_dc) is underestimated")
+                   f"{eng(op['f_sw_max'], 'Hz')} ({eng(skin, 'm')}): the copper loss (I_rms² R_dc) is underestimated")
     if op["i_peak_max"] > SWITCH_I_MAX:
         out.append(f"the peak current reaches {eng(op['i_peak_max'], 'A')} (V12(H) high, R1 low), above the "
                    f"{eng(SWITCH_I_MAX, 'A')} assumed for the TCA5600's internal switch (the excerpt's R1 = "
