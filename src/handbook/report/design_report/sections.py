@@ -3,7 +3,7 @@ changed first), each designed circuit (schematic, parts, what binds, margins), l
 BOM, and the warnings and assumptions."""
 from __future__ import annotations
 
-from ...core.units import readable
+from ...core.units import readable, signed_percent
 from ...design.bom import SHEETS
 from ...design.ratings import SATURATION_MARGIN
 from ...design.schema import TABLES
@@ -132,10 +132,29 @@ def _eva_margins(t: str, result) -> list[tuple[str, str, float, str]]:
 
 
 def margins_table(t: str, result) -> str:
+    """The design's margins (:func:`margins`) as a table: label, value, what each is held to."""
+    rows = [[esc(readable(label)), value(f"{t}.{key}", mg, "%"), esc(held_to)] for label, key, mg, held_to in margins(t, result)]
+    return table(["margin (at the worst corner)", "value", "held to"], rows, (1,)) if rows else ""
+
+
+def margins(t: str, result) -> list[tuple[str, str, float, str]]:
     """The design's margins: every limited quantity's at its worst corner (EVA over the worst-case model, the
     inputs section 4 lists), then the margins the design itself states that are not among them; the class-D
     stage's are its own checks (:data:`~handbook.design.class_d.model.CHECKS`, each at its worst corner, which
-    section 4's model follows; the heat sink's only where one is given: else it is sized, with no margin)."""
+    section 4's model follows; the heat sink's only where one is given: else it is sized, with no margin).
+
+    Parameters
+    ----------
+    t : str
+        The design table.
+    result : Result
+        Its design.
+
+    Returns
+    -------
+    list of tuple
+        (label, data key, margin as a fraction of its limit, what it is held to), in the table's order.
+    """
     if t == "class_d":
         from ...design.class_d.explain import SHOW
         from ...design.class_d.model import CHECKS
@@ -152,8 +171,7 @@ def margins_table(t: str, result) -> str:
         found += [(o.label, o.key, getattr(result, o.key), "the design's own") for o in OUTPUTS[t]
                   if "margin" in o.key and o.unit == "%"
                   and not any(abs(getattr(result, o.key) - mg) < 1e-9 for _, _, mg, _ in found)]
-    rows = [[esc(readable(label)), value(f"{t}.{key}", mg, "%"), esc(held_to)] for label, key, mg, held_to in found]
-    return table(["margin (at the worst corner)", "value", "held to"], rows, (1,)) if rows else ""
+    return found
 
 
 def _figures(t: str, result) -> list[tuple[object, str]]:
@@ -211,7 +229,7 @@ def circuits_section(ctx) -> str:
     for t, result in ctx.designed.items():
         sheet = SHEETS[t][0]
         out += [f'<h3 id="circuit-{t}">{esc(title(t))}</h3>', _schematic(t, result, ctx.spice_warnings),
-                f"<p><b>What binds:</b> {esc(str(result.binding))}</p>",
+                f"<p><b>What binds:</b> {esc(str(result.binding))}</p>" + _least(t, result),
                 "<h4>Chosen parts and their ratings</h4>", parts_table([r for r in ctx.bom if r["sheet"] == sheet]),
                 "<h4>Margins</h4>", margins_table(t, result) or note("this design states no margin as a fraction"),
                 "<h4>How the choice was made</h4>",
@@ -219,6 +237,17 @@ def circuits_section(ctx) -> str:
                                                                       "above is the choice"),
                 f"<details open><summary>Every result of [{esc(t)}]</summary>{results_table(t, result)}</details>"]
     return "".join(out)
+
+
+def _least(t: str, result) -> str:
+    """The least margin at its worst corner, named beside what binds the choice (they need not be the same: a
+    series pick can leave a check closer to its limit than the one that decided)."""
+    found = margins(t, result)
+    if not found:
+        return ""
+    label, _key, mg, held_to = min(found, key=lambda f: f[2])
+    return (f"<p><b>Least margin:</b> {esc(readable(label))}, {esc(signed_percent(mg))} at its worst corner"
+            + (f" (held to {esc(held_to)})" if held_to else "") + "</p>")
 
 
 def losses_section(ctx) -> str:
