@@ -268,3 +268,31 @@ def test_html_parses_and_carries_mathml(designed, table):
         maths = block.findall("{http://www.w3.org/1998/Math/MathML}math", ) + block.findall(".//math")
         assert len(block.findall(".//{http://www.w3.org/1998/Math/MathML}math")) >= (2 if st.symbols_tex else 0), \
             (st.title, maths)
+
+
+def test_the_core_loss_step_recomputes_from_its_own_numbers(designed):
+    """The iGSE step's numbers: k_i from the Steinmetz k, alpha, beta with the integral of |cos|^alpha taken here
+    by quadrature (the design uses its Gamma-function closed form), the density at the step's f, D and delta-B,
+    times V_e: the design's core loss, and the step shows each figure."""
+    import numpy as np
+
+    r = designed["default"]["converter"]
+    table = cores.load()
+    shape, material = table["shapes"][r.core_shape], table["materials"][r.core_material]
+    from handbook.design.converter.operating import HOT, corner
+
+    op = {"l1_max": r.l1_max, "i_peak_max": r.i_peak_max, "hot": tuple(corner(r.spec, e) for e in HOT)}
+    pt = max(coil.core_loss_points(material, shape, op, r.turns), key=lambda x: x["loss"])
+    rng, _ = coil.steinmetz_range(material, pt["f"])
+    a, b = rng["alpha"], rng["beta"]
+    theta = np.linspace(0, 2 * np.pi, 200_001)
+    integral = float(np.trapezoid(np.abs(np.cos(theta)) ** a, theta))
+    k_i = rng["k"] / ((2 * np.pi) ** (a - 1) * 2 ** (b - a) * integral)
+    c_t = rng["ct0"] - rng["ct1"] * 25 + rng["ct2"] * 25 ** 2
+    delta_b = r.l1_max * r.i_peak_max / (r.turns * shape["ae"])
+    d = pt["duty"]
+    loss = k_i * delta_b ** b * pt["f"] ** a * (d ** (1 - a) + (1 - d) ** (1 - a)) * c_t * shape["ve"]
+    assert loss == pytest.approx(r.core_loss, rel=1e-6)
+    step = next(st for st in calcsheet.steps("converter", r) if "Steinmetz" in st.title)
+    for shown in (f"{k_i:.4g}", eng(delta_b, "T"), eng(pt["f"], "Hz"), f"D = {d:.3f}", eng(r.core_loss, "W")):
+        assert shown in step.title.replace("\N{MINUS SIGN}", "-"), shown

@@ -386,6 +386,27 @@ def converter(r) -> list:
     return out + _coil(r, s)
 
 
+def _core_loss_step(r, s, shape: dict, material: dict, here: str):
+    """The iGSE core loss with its numbers, at the point of the largest loss (supply and hot corner)."""
+    from ..design.converter import coil as cl
+    from ..design.converter.operating import HOT, corner
+
+    op = {"l1_max": r.l1_max, "i_peak_max": r.i_peak_max, "hot": tuple(corner(s, ends) for ends in HOT)}
+    pt = max(cl.core_loss_points(material, shape, op, r.turns), key=lambda x: x["loss"])
+    rng, inside = cl.steinmetz_range(material, pt["f"])
+    k_i, a, b, c_t = cl.igse_coefficients(material, pt["f"])
+    density = pt["loss"] / shape["ve"]
+    return words(f"Core loss by the improved generalised Steinmetz equation (Venkatachalam et al., 2002): P = V_e k_i "
+                 f"ΔB^β f^α (D^(1−α) + (1−D)^(1−α)) c_t, {r.core_material}'s range {_at(rng['f_low'], 'Hz')} .. "
+                 f"{_at(rng['f_high'], 'Hz')}{'' if inside else ' (extrapolated)'}: k = {rng['k']:.4g}, α = {a:.4g}, "
+                 f"β = {b:.4g}, so k_i = k / ((2π)^(α−1) 2^(β−α) ∫₀^2π |cos θ|^α dθ) = {k_i:.4g}, c_t = {c_t:.4g} at "
+                 f"{cl.T_LOSS:g} °C; the largest at V_CC2 = {_at(pt['vcc'], 'V')} with V12(H) high: "
+                 f"ΔB = L1,max I_pk,max / (N A_e) = {_at(pt['delta_b'], 'T')} over the effective area "
+                 f"{_at(shape['ae'], 'm²')}, f = {_at(pt['f'], 'Hz')}, D = {pt['duty']:.3f}: {density / 1e3:.4g} kW/m³ "
+                 f"× V_e {shape['ve'] * 1e9:.4g} mm³ = {_at(pt['loss'], 'W')}", (r.core_loss, "W"),
+                 f"{here}: iGSE (coil.core_loss), PyOpenMagnetics' Steinmetz ranges")
+
+
 def _coil(r, s) -> list:
     """The chosen core wound: turns, gap, flux density, winding loss, core loss and temperature rise."""
     from ..design.converter import coil as cl
@@ -425,12 +446,7 @@ def _coil(r, s) -> list:
                       f"bobbin; {c.current_density / 1e6:.3g} A/mm²), copper at its hottest", "tca5600-winding",
                       {"I_{rms}": (r.i_rms, "A"), "N": (r.turns, "1"), r"\ell_{MLT}": (shape["mlt"], "m"),
                        "r'": (per_m, "Ω/m")}, (r.winding_loss, "W")),
-        words(f"Core loss by the improved Generalised Steinmetz Equation with {r.core_material}'s coefficients, at the "
-              f"largest flux swing over the core's effective area A_e = {_at(shape['ae'], 'm²')} (the iGSE works on the "
-              f"effective parameters): L1,max I_pk,max / (N A_e) = "
-              f"{_at(r.l1_max * r.i_peak_max / (r.turns * shape['ae']), 'T')}, "
-              f"the largest over the supply range and the device corners: {_at(r.core_loss, 'W')}", (r.core_loss, "W"),
-              f"{here}: iGSE, PyOpenMagnetics' Steinmetz ranges (coil.core_loss)"),
+        _core_loss_step(r, s, shape, material, here),
         equation_step("Temperature rise of the coil", "tca5600-rise",
                       {"R_{th}": (shape["r_th"], "K/W"), "P_{Cu}": (r.winding_loss, "W"),
                        "P_{core}": (r.core_loss, "W")}, (r.temperature_rise, "K")),

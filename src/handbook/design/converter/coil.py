@@ -183,12 +183,31 @@ def igse_density(material: dict, delta_b: float, f: float, duty: float) -> float
     float
         The core loss per volume, W/m^3.
     """
+    k_i, a, b, temp = igse_coefficients(material, f)
+    return k_i * delta_b ** b * f ** a * (duty ** (1 - a) + (1 - duty) ** (1 - a)) * temp
+
+
+def igse_coefficients(material: dict, f: float) -> tuple[float, float, float, float]:
+    """The iGSE's coefficients at f (:func:`igse_density`): k_i from the Steinmetz range's k, alpha, beta, and the
+    temperature factor ct0 - ct1 T + ct2 T^2 at :data:`T_LOSS`.
+
+    Parameters
+    ----------
+    material : dict
+        One material's row of :func:`~handbook.design.converter.cores.load`.
+    f : float
+        The switching frequency, Hz (its Steinmetz range: :func:`steinmetz_range`).
+
+    Returns
+    -------
+    tuple of float
+        (k_i, alpha, beta, the temperature factor).
+    """
     r, _ = steinmetz_range(material, f)
     a, b = r["alpha"], r["beta"]
     cos_integral = 2 * math.sqrt(math.pi) * math.gamma((a + 1) / 2) / math.gamma(a / 2 + 1)
     k_i = r["k"] / ((2 * math.pi) ** (a - 1) * 2 ** (b - a) * cos_integral)
-    temp = r["ct0"] - r["ct1"] * T_LOSS + r["ct2"] * T_LOSS ** 2
-    return k_i * delta_b ** b * f ** a * (duty ** (1 - a) + (1 - duty) ** (1 - a)) * temp
+    return k_i, a, b, r["ct0"] - r["ct1"] * T_LOSS + r["ct2"] * T_LOSS ** 2
 
 
 def b_sat(material: dict, temperature: float) -> float:
@@ -308,18 +327,41 @@ def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tup
         (the core loss, W, the largest over nine supply points at each hot corner; the full-load frequencies it
         was evaluated at, Hz, a list: the supply points where the converter switches).
     """
+    points = core_loss_points(material, shape, op, turns)
+    return max((pt["loss"] for pt in points), default=0.0), [pt["f"] for pt in points]
+
+
+def core_loss_points(material: dict, shape: dict, op: dict, turns: int) -> list[dict]:
+    """Every point :func:`core_loss` takes its largest over: nine supply points at each hot corner where the
+    converter switches, each with its figures.
+
+    Parameters
+    ----------
+    material, shape : dict
+        The material's and the core shape's rows of :func:`~handbook.design.converter.cores.load`.
+    op : dict
+        The operating point (``l1_max`` in H, ``i_peak_max`` in A and the ``hot`` corners are read).
+    turns : int
+        The coil's turns.
+
+    Returns
+    -------
+    list of dict
+        ``vcc`` (V), ``f`` (Hz), ``duty`` (the rising fraction), ``delta_b`` (T, peak to peak over A_e) and
+        ``loss`` (W) of each point.
+    """
     delta_b = op["l1_max"] * op["i_peak_max"] / (turns * shape["ae"])
-    worst, freqs = 0.0, []
+    out = []
     for hot in op["hot"]:
         for v in supplies(hot, 9):
             vl_plus, vl_minus = coil_voltages(hot, v)
             f = frequency(hot, v, op["l1_max"], op["i_peak_max"])
             if f <= 0:
                 continue
-            freqs.append(f)
             duty = vl_plus / (vl_plus + vl_minus)  # t1 / (t1 + t2)
-            worst = max(worst, igse_density(material, delta_b, f, duty) * shape["ve"])
-    return worst, freqs
+            out.append({"vcc": v, "f": f, "duty": duty, "delta_b": delta_b,
+                        "loss": igse_density(material, delta_b, f, duty) * shape["ve"]})
+    return out
 
 
 def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | None = None) -> Coil:
