@@ -284,8 +284,8 @@ def _class_d_heat(r, s) -> list:
     rds = float(lm.rds_on_max(t_target)) * s["rds_on_25"] / lm.RDS_ON_MAX_25
     p_cond = lm.p_conduction(p_th, s["r_load"], rds)
     p_idle = lm.p_idle_4652(s["supply"])
-    fitted = ("the one needed" if s["theta_sa_available"] is None else
-              f"θ_SA = {s['theta_sa_available']:g} K/W available")
+    fitted = ("the one needed: at the corner that sets it T_j is the target by construction, the other corner runs "
+              "cooler" if s["theta_sa_available"] is None else f"θ_SA = {s['theta_sa_available']:g} K/W available")
     return [
         equation_step(f"Switching loss fraction at the corner that sets the heat sink ({_at(f_set, 'Hz')})",
                       "lm4651-eq9", {"t_r": (DEVICE["t_rise"], "s"), "t_f": (DEVICE["t_fall"], "s"),
