@@ -116,7 +116,7 @@ def drift(s: dict) -> tuple[str, ...]:
     Returns
     -------
     tuple of str
-        Sentences: D1's drift (in the analysis), the dividers' and R7's tempco (outside it).
+        Sentences: D1's drift (in the analysis), the dividers' and R7's tempco (outside it), ageing.
     """
     span, tc, vz = s["temp_span"], s["zener_tc"], s["zener_voltage"]
     return (
@@ -131,6 +131,7 @@ def drift(s: dict) -> tuple[str, ...]:
         f"= {s['min_margin']:.0%} (the schema's meaning of min_margin).",
         "The LM358's offset and bias figures are its over-temperature maxima (LM358 datasheet, TI SLOS068): "
         "their drift is inside the ranges sampled.",
+        "Ageing: no source here prints it for these parts; min_margin is what is left for it.",
     )
 
 

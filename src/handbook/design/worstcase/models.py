@@ -250,5 +250,7 @@ def converter(result) -> Model:
              "at t_ambient + the coil's rise (the material's 25 C and 100 C figures, PyOpenMagnetics' database).",
              r1_drift_sentence(result),
              "V12(H), V_CE(sat) and V_F have no public figures, nor temperature coefficients (the TCA5600 chapter's "
-             f"reading note): the assumed +-{spread:.0%} (device_spread) stands for spread and drift together.")
+             f"reading note): the assumed +-{spread:.0%} (device_spread) stands for spread and drift together.",
+             "Ageing: no source here prints it for these parts (an electrolytic C2 loses capacitance as it ages, which "
+             "the design does not use: C2 only holds the regulator's input).")
     return Model(srcs, measures, f, drift)
