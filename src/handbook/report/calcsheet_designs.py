@@ -6,8 +6,6 @@ E-series pick, a tolerance, a rating rule) is a step in words.
 """
 from __future__ import annotations
 
-import math
-
 from .calcsheet_steps import equation_step, shown, words
 
 _AN = "AN94002"
@@ -419,8 +417,8 @@ def _coil(r, s) -> list:
     r_core = cl.core_reluctance(shape, material)
     t_coil = s["t_ambient"] + r.temperature_rise
     b_sat = cl.b_sat(material, t_coil)
-    n_gap = math.sqrt(r.l1_nominal * (r_core + cl.gap_reluctance(shape, cl.GAP_MIN)))
-    n_sat = r.l1_max * r.i_peak_max / ((1 - s["saturation_margin_min"]) * b_sat * shape["a_min"])
+    n_gap, n_sat = cl.turn_bounds(shape, material, s, {"l1_nominal": r.l1_nominal, "l1_max": r.l1_max,
+                                                        "i_peak_max": r.i_peak_max}, t_coil)
     r_gap = r.turns ** 2 / r.l1_nominal - r_core
     per_m = c.r_dc / (r.turns * shape["mlt"])
     flux = {"L_1": (r.l1_max, "H"), "I_{L(peak)}": (r.i_peak_max, "A"), "N": (r.turns, "1")}

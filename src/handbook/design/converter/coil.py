@@ -364,6 +364,33 @@ def core_loss_points(material: dict, shape: dict, op: dict, turns: int) -> list[
     return out
 
 
+def turn_bounds(shape: dict, material: dict, s: dict, op: dict, temperature: float) -> tuple[float, float]:
+    """The two least turn counts (real numbers, before rounding up) of a core: the one whose gap for the nominal
+    inductance is :data:`GAP_MIN` (sqrt(L1 (R_core + R_gap(GAP_MIN)))), and the one that keeps the peak flux at the
+    narrowest section ``saturation_margin_min`` below saturation at ``temperature`` (L_max I_peak,max /
+    ((1 - margin) B_sat A_min)).
+
+    Parameters
+    ----------
+    shape, material : dict
+        The core shape's and the material's rows of :func:`~handbook.design.converter.cores.load`.
+    s : dict
+        The checked ``[converter]`` table (``saturation_margin_min`` is read).
+    op : dict
+        The operating point (``l1_nominal``, ``l1_max`` in H, ``i_peak_max`` in A are read).
+    temperature : float
+        The core's temperature, C.
+
+    Returns
+    -------
+    tuple of float
+        (turns for the smallest gap, turns for the saturation margin).
+    """
+    n_gap = math.sqrt(op["l1_nominal"] * (core_reluctance(shape, material) + gap_reluctance(shape, GAP_MIN)))
+    b_allowed = (1 - s["saturation_margin_min"]) * b_sat(material, temperature)
+    return n_gap, op["l1_max"] * op["i_peak_max"] / (b_allowed * shape["a_min"])
+
+
 def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | None = None) -> Coil:
     """One candidate core, wound and costed (see the module's description).
 
@@ -392,11 +419,7 @@ def coil(shape_name: str, material_name: str, s: dict, op: dict, table: dict | N
     """
     table = table or cores.load()
     shape, material = table["shapes"][shape_name], table["materials"][material_name]
-    l_nom, flux_n = op["l1_nominal"], op["l1_max"] * op["i_peak_max"]  # flux_n = N x peak flux
-    r_core = core_reluctance(shape, material)
-    n_gap = math.sqrt(l_nom * (r_core + gap_reluctance(shape, GAP_MIN)))
-    b_allowed = lambda t: (1 - s["saturation_margin_min"]) * b_sat(material, t)  # noqa: E731
-    n_for = lambda t: math.ceil(max(n_gap, flux_n / (b_allowed(t) * shape["a_min"])) * (1 - 1e-12))  # noqa: E731
+    n_for = lambda t: math.ceil(max(turn_bounds(shape, material, s, op, t)) * (1 - 1e-12))  # noqa: E731
     n_hi = n_for(s["t_ambient"] + s["temperature_rise_max"])  # enough at the hottest the rise allows
     # the fewest turns that hold the margin at the coil's own temperature: from the ambient's count up, each
     # step to the count the last one's temperature asks for (the count only grows; at most n_hi)
