@@ -53,6 +53,15 @@ def test_eva_is_the_designs_own_corners():
     assert (w.quantity("f_sw").eva_low, w.quantity("f_sw").eva_high) == pytest.approx((cd.f_sw_min, cd.f_sw_max))
     assert w.quantity("thd_n").eva_high == pytest.approx(cd.thd_n, rel=1e-12)
     assert w.quantity("f_corner").nominal == pytest.approx(cd.f_corner, rel=1e-12)
+    # rails with a tolerance: an input of their own; EVA's corners equal the design's rail ends
+    rails = class_d.design({"supply_tolerance": 0.05, "p_out": 110.0})
+    w = wc.analyse("class_d", rails, n=20_000, seed=1)
+    (v_s,) = [d for d in w.distributions if d.part == "±V_S rails"]
+    assert (v_s.low, v_s.high) == pytest.approx((19.0, 21.0)) and v_s.unit == "V"
+    assert w.quantity("p_clip").eva_low == pytest.approx(rails.p_clip, rel=1e-12)
+    assert w.quantity("thd_n").eva_high == pytest.approx(rails.thd_n, rel=1e-12)
+    assert w.quantity("i_peak").eva_high == pytest.approx(rails.figures["i_peak"], rel=1e-12)
+    assert w.quantity("ripple").eva_high == pytest.approx(rails.figures["ripple"], rel=1e-12)
     # the converter's corners are R1, A_L and the TCA5600's V12(H), V_CE(sat) and V_F at +-device_spread, the
     # spread the design assumed: EVA is the design's own least current, f_min and lowest frequency, with the
     # spread as given, none or wide

@@ -97,10 +97,11 @@ def test_a_class_d_design_is_confirmed(ngspice):
 
     from handbook.design.class_d import model
 
-    spec = {"r_load": 4.0, "supply": 20.0, "f_audio": 500.0, "osc_tol_slow": 0.2, "osc_tol_fast": 0.235,
+    spec = {"r_load": 4.0, "supply": 20.0, "supply_tolerance": 0.05, "f_audio": 500.0, "osc_tol_slow": 0.2, "osc_tol_fast": 0.235,
             "l_tolerance": 0.1, "c_tolerance": 0.05, "ripple_max": 0.5}
     fo, lo, co = model.corner_factors(spec)
-    worst = max(eqs.ripple_rms(77.16e3 * a, 220e-6 * b, 22e-6 * c, 4.0, 20.0) for a, b, c in zip(fo, lo, co))
+    # at the high rail, +-21 V: the residue grows with the rails
+    worst = max(eqs.ripple_rms(77.16e3 * a, 220e-6 * b, 22e-6 * c, 4.0, 21.0) for a, b, c in zip(fo, lo, co))
     result = SimpleNamespace(spec=spec, l_out=220e-6, c_out=22e-6, f_sw=77.16e3, f_sw_min=77.16e3 * 0.8,
                              f_sw_max=77.16e3 * 1.235, figures={"ripple": worst})
     out = class_d.design_check(result)

@@ -39,8 +39,6 @@ TDA5144_VP_MAX = 18.0
 #: the voltage across the LM4651's R_OSC and R_DLY, at most (an assumption: the pins set bias currents and the
 #: datasheet gives no pin voltage; 5 V bounds a bias reference of this kind)
 PIN_VOLTAGE = 5.0
-#: the LM4651/LM4652's operating supply, V+ + V-, V (datasheet operating ratings: 22 V to 44 V)
-LM4651_SUPPLY = (22.0, 44.0)
 #: the TDA5144's supply V_P, V (TDA5144 datasheet: 4 V to 18 V)
 TDA5144_VP = (4.0, TDA5144_VP_MAX)
 #: the LM358's supply, single, V (TI LM358 datasheet, SLOS068, recommended operating conditions: 3 V to 32 V)
@@ -233,23 +231,26 @@ def class_d_rows(cd) -> list[dict]:
     i_peak = float(fig["i_peak"])
     i_sat = ratings.SATURATION_MARGIN * i_peak
     i_rms = (cd.p_thermal / s["r_load"]) ** 0.5
-    v_c = 2 * s["supply"]
+    v_low, v_high = model.rails(s)
+    v_c = 2 * v_high
+    rail_text = f"±{s['supply']:g} V" + (f" ± {s['supply_tolerance'] * 100:.3g} % (up to ±{v_high:.4g} V)"
+                                         if s["supply_tolerance"] else "")
     v_rating = ratings.capacitor_voltage(v_c, film=True)
     pin = PIN_VOLTAGE ** 2  # R_OSC and R_DLY each carry at most PIN_VOLTAGE
-    # C_BYP's rms current: the clipping sine across it at the top of the band (C high, the fast corner's clipping)
-    # and the coils' triangular ripple at the slow corner with L low, which the capacitor takes (D = 1/2: V_s/(2 L f)
-    # peak to peak, rms a 2 sqrt(3)th of it)
+    # C_BYP's rms current: the clipping sine across it at the top of the band (C high, the fast corner's clipping
+    # at the high rail) and the coils' triangular ripple at the slow corner with L low and the high rail, which the
+    # capacitor takes (D = 1/2: V_s/(2 L f) peak to peak, rms a 2 sqrt(3)th of it)
     c_hi, l_lo = cd.c_out * (1 + s["c_tolerance"]), cd.l_out * (1 - s["l_tolerance"])
-    i_audio_c = (cd.p_clip * s["r_load"]) ** 0.5 * 2 * math.pi * s["f_audio"] * c_hi
-    i_ripple_c = s["supply"] / (2 * l_lo * cd.f_sw_min) / (2 * 3 ** 0.5)
+    i_audio_c = (cd.p_clip * s["r_load"]) ** 0.5 * v_high / v_low * 2 * math.pi * s["f_audio"] * c_hi
+    i_ripple_c = v_high / (2 * l_lo * cd.f_sw_min) / (2 * 3 ** 0.5)
     i_c1 = math.hypot(i_audio_c, i_ripple_c)
-    supply_text = (f"supply V+ + V− {LM4651_SUPPLY[0]:g} V to {LM4651_SUPPLY[1]:g} V, T_A −40 °C to +85 °C (LM4651/"
-                   f"LM4652 operating ratings): ±{s['supply']:g} V is {v_c:g} V, at {t_a:g} °C ambient")
+    supply_text = (f"supply V+ + V− {lm4651.SUPPLY_TOTAL[0]:g} V to {lm4651.SUPPLY_TOTAL[1]:g} V, T_A −40 °C to +85 °C (LM4651/"
+                   f"LM4652 operating ratings): {rail_text} is {v_c:.4g} V, at {t_a:g} °C ambient")
     return [
-        _row(sheet, "U1", "LM4651 class-D PWM driver", "LM4651", "", voltage=LM4651_SUPPLY[1], stress=v_c,
+        _row(sheet, "U1", "LM4651 class-D PWM driver", "LM4651", "", voltage=lm4651.SUPPLY_TOTAL[1], stress=v_c,
              rating_text=supply_text, reason="drives the LM4652" + (
                  "; pin 17 (DELAY) to ground: its own 27 ns meets dead_time_min, no R_DLY" if cd.r_dly == 0 else "")),
-        _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "", voltage=LM4651_SUPPLY[1],
+        _row(sheet, "U2", f"LM4652 MOSFET H-bridge, {s['package']} package", "LM4652", "", voltage=lm4651.SUPPLY_TOTAL[1],
              stress=v_c, current=lm4651.I_LIMIT,
              rating_text=f"{supply_text}; output current: the LM4651's limit, which the datasheet's R_SCKT text asks to "
                          f"keep at 10 A, above the coils' worst peak {eng(i_peak, 'A')}; its maximum saturation drain "
@@ -274,7 +275,7 @@ def class_d_rows(cd) -> list[dict]:
         _row(sheet, "C1", "C_BYP, output filter capacitor", cd.c_out, "F", s["c_tolerance"], voltage=v_rating,
              current=i_c1 / ratings.DERATING, stress=v_c, technology="polyester or polypropylene film (the datasheet's "
              "Mylar)", package=_film_package(cd.c_out), tempco="",
-             rating_text=f"{v_rating:g} V: the bridge swings ±{s['supply']:g} V per side, up to {v_c:g} V across "
+             rating_text=f"{v_rating:g} V: the bridge swings {rail_text} per side, up to {v_c:.4g} V across "
                          f"it, 50 % derating; rms current ≥ {eng(i_c1 / ratings.DERATING, 'A')}: it carries "
                          f"{eng(i_c1, 'A')} (the clipping sine at the top of the band, {eng(i_audio_c, 'A')}, and the "
                          f"coils' ripple, {eng(i_ripple_c, 'A')}), 50 % derating",

@@ -275,6 +275,12 @@ def _tables() -> dict[str, tuple[Param, ...]]:
             Param(name="r_load", default=4.0, unit="ohm", meaning="load resistance", high=1e3, **_POS),
             Param(name="supply", default=20.0, unit="V", meaning="supply rails +-V", low=11.0, high=22.0,
                   cite="LM4651/LM4652 operating ratings: V+ + V- 22 V to 44 V"),
+            Param(name="supply_tolerance", default=0.0, unit="1", low=0.0, high=0.5,
+                  meaning="how far the rails may stray from supply either way, fraction: clipping is judged at the "
+                          "low rail, THD+N, the residue, the coils' peak and the heat sink at the high one (0: "
+                          "regulated rails held at supply; an unregulated supply's mains and load swing goes here)",
+                  cite="assumption: the datasheet's figures are at +-20 V exactly; the design reports the lowest "
+                       "rail that still delivers p_out"),
             Param(name="t_ambient", default=50.0, unit="C", meaning="highest ambient temperature", low=-40.0,
                   high=149.0),
             Param(name="package", default="TF", unit="", meaning="LM4652 package: 'TF' (isolated) or 'T'",

@@ -224,11 +224,12 @@ def _corner_text(s: dict, corner: tuple) -> str:
 
 
 def _class_d_filter(r, s) -> list:
-    """Q, the residue, THD+N, clipping and the coils' peak, each at the corner where it is worst."""
+    """Q, the residue, THD+N, clipping and the coils' peak, each at the corner where it is worst (the rails at their
+    high end, clipping at their low end)."""
     from ..design.class_d import model
     from ..sources.lm4651 import circuit as lm
 
-    fig, rl, vs = r.figures, s["r_load"], s["supply"]
+    fig, rl, (v_low, vs) = r.figures, s["r_load"], model.rails(s)
     worst = model.worst_corners(s, r.r_osc, r.l_out, r.c_out, r.r_dly)
     (fq, lq, cq), (fr, lr, cr), (ft, lt, ct), (fi, li, ci) = (worst[k] for k in ("filter Q", "ripple", "THD+N",
                                                                                   "inductor peak"))
@@ -241,12 +242,13 @@ def _class_d_filter(r, s) -> list:
            f"the distortion alone (the residue, {_pct(resid)}, at {_at(ft, 'Hz')} lies above the "
            f"{_at(s['thd_bandwidth'], 'Hz')} band)")
     load = {"R_L": (rl, "Ω"), "V_s": (vs, "V")}
+    rail = _rail(s, "high")
     return [
         equation_step(f"Filter Q at its worst corner ({_corner_text(s, worst['filter Q'])})", "lm4651-filter-q",
                       {"R_L": (rl, "Ω"), "L_1": (lq, "H"), "C_{BYP}": (cq, "F")}, (fig["q"], "1")),
-        equation_step(f"Switching residue at its worst corner ({_corner_text(s, worst['ripple'])})", "lm4651-ripple",
+        equation_step(f"Switching residue at its worst corner ({_corner_text(s, worst['ripple'])}){rail}", "lm4651-ripple",
                       {**load, "f_{SW}": (fr, "Hz"), "L_1": (lr, "H"), "C_{BYP}": (cr, "F")}, (fig["ripple"], "V")),
-        equation_step(f"THD+N's distortion at {_at(p_t, 'W')}, at the worst corner ({_corner_text(s, worst['THD+N'])})",
+        equation_step(f"THD+N's distortion at {_at(p_t, 'W')}, at the worst corner ({_corner_text(s, worst['THD+N'])}){rail}",
                       "lm4651-thd", {r"\{f_{SW}\}_{\mathrm{Hz}}": (ft, "1"), r"\{L_1\}_{\mathrm{H}}": (lt, "1"),
                                      r"\{C_{BYP}\}_{\mathrm{F}}": (ct, "1"), r"\{V_s\}_{\mathrm{V}}": (vs, "1"),
                                      r"\{P_{out}\}_{\mathrm{W}}": (p_t, "1"), r"\{R_L\}_{\Omega}": (rl, "1")},
@@ -255,15 +257,28 @@ def _class_d_filter(r, s) -> list:
               f"{_at(lm.ripple_rms(ft, lt, ct, rl, vs), 'V')} / √({_at(p_t, 'W')} · {_at(rl, 'Ω')}) = {_pct(resid)}; "
               f"THD+N = {rss} = {_pct(fig['thd_n'])}", (f"{_pct(fig['thd_n'])}", ""),
               f"{_CLASS_D}: thd_n_measured (residue root-sum-square inside the analyser's band)"),
-        equation_step(f"Clipping power at the fast corner ({_at(r.f_sw_max, 'Hz')})", "lm4651-p-clip",
-                      {r"\{V_s\}_{\mathrm{V}}": (vs, "1"), r"\{f_{SW}\}_{\mathrm{Hz}}": (r.f_sw_max, "1"),
+        equation_step(f"Clipping power at the fast corner ({_at(r.f_sw_max, 'Hz')}){_rail(s, 'low')}", "lm4651-p-clip",
+                      {r"\{V_s\}_{\mathrm{V}}": (v_low, "1"), r"\{f_{SW}\}_{\mathrm{Hz}}": (r.f_sw_max, "1"),
                        r"\{R_L\}_{\Omega}": (rl, "1")}, (r.p_clip, "W")),
+        words(f"Lowest rail that still delivers {_at(model.p_unclipped(s), 'W')} unclipped at the fast corner (the "
+              f"clipping power goes as V_s²): {_at(s['supply'], 'V')} × √({_at(model.p_unclipped(s), 'W')} / "
+              f"{_at(lm.p_clip(r.f_sw_max, rl, s['supply']), 'W')}) = ±{_at(r.supply_least, 'V')}",
+              (r.supply_least, "V"), f"{_CLASS_D}: model.supply_least"),
         equation_step(f"Coils' peak current at the worst corner ({_corner_text(s, worst['inductor peak'])}; V_pk at "
-                      f"clipping there, √(2 R_L P_clip) = {_at(v_pk, 'V')})", "lm4651-inductor-peak",
+                      f"clipping there, √(2 R_L P_clip) = {_at(v_pk, 'V')}){rail}", "lm4651-inductor-peak",
                       {"V_{pk}": (v_pk, "V"), **load, "f_a": (s["f_audio"], "Hz"), "C_{BYP}": (ci, "F"),
                        "L_1": (li, "H"), "f_{SW}": (fi, "Hz")}, (fig["i_peak"], "A"), errata=("lm4651-isckt",)),
     ]
 
+
+
+def _rail(s: dict, end: str) -> str:
+    """Where the rails are taken, when they have a tolerance: ", at the high rail (+-21 V)"."""
+    from ..design.class_d import model
+
+    if not s["supply_tolerance"]:
+        return ""
+    return f", at the {end} rail (±{_at(model.rails(s)[end == 'high'], 'V')})"
 
 
 def _class_d_heat(r, s) -> list:
@@ -276,12 +291,10 @@ def _class_d_heat(r, s) -> list:
     t_target = DEVICE["tj_max"] - s["tj_margin"]
     theta_jc = DEVICE["theta_jc"][s["package"]]
     f_set, p_set = model.heat_corner(s, r.f_sw_min, r.f_sw_max)  # the corner and dissipation eq 11 is taken at
-    p_th = float(model.thermal_power(s, f_set))
-    x = lm.switching_loss_fraction(f_set, t_overmod=s["t_overmod"])
-    p_sw = lm.p_switch(f_set, p_th, t_overmod=s["t_overmod"])
-    rds = float(lm.rds_on_max(t_target)) * s["rds_on_25"] / lm.RDS_ON_MAX_25
-    p_cond = lm.p_conduction(p_th, s["r_load"], rds)
-    p_idle = lm.p_idle_4652(s["supply"])
+    terms = {k: float(v) for k, v in model.loss_terms(s, f_set, t_target).items()}
+    p_th, x, rds = terms["p_out"], terms["fraction"], terms["rds_on"]
+    p_sw, p_cond, p_idle = terms["switching"], terms["conduction"], terms["idle"]
+    v_high = model.rails(s)[1]
     fitted = ("the one needed: at the corner that sets it T_j is the target by construction, the other corner runs "
               "cooler" if s["theta_sa_available"] is None else f"θ_SA = {s['theta_sa_available']:g} K/W available")
     return [
@@ -289,7 +302,8 @@ def _class_d_heat(r, s) -> list:
                       "lm4651-eq9", {"t_r": (DEVICE["t_rise"], "s"), "t_f": (DEVICE["t_fall"], "s"),
                                      "T_{OVERMOD}": (s["t_overmod"], "s"), "f": (f_set, "Hz")}, (x, "%"),
                       errata=("lm4651-overmod",)),
-        equation_step(f"Switching dissipation at {r.thermal_basis} ({_at(p_th, 'W')})", "lm4651-eq10",
+        equation_step(f"Switching dissipation at {r.thermal_basis} ({_at(p_th, 'W')}){_rail(s, 'high')}",
+                      "lm4651-eq10",
                       {"x": (x, "1"), "P_{out}": (p_th, "W")}, (p_sw, "W")),
         equation_step(f"Conduction dissipation, R_DS(on) at its maximum at T_j = {t_target:g} °C: "
                       f"{_at(s['rds_on_25'], 'Ω')} × (1 + {lm.RDS_TC * 100:.2g} %/K × ({t_target:g} − 25) K) = "
@@ -299,9 +313,9 @@ def _class_d_heat(r, s) -> list:
                       errata=("lm4651-t-rds",)),
         words(f"LM4652 dissipation: switching {_at(p_sw, 'W')} + conduction {_at(p_cond, 'W')} + idle "
               f"{_at(p_idle, 'W')} = {_at(p_set, 'W')}; the idle loss is what the system table's 55 % at 5 W leaves "
-              f"after conduction and switching, {_at(lm.P_IDLE_REF, 'W')} at ±20 V (× {s['supply']:g} V / 20 V: "
-              f"{_at(lm.p_idle(s['supply']), 'W')}), less the LM4651's own 36 mA (|I_VCC+| + |I_VEE−|) × "
-              f"{s['supply']:g} V = {_at(lm.I_Q_4651 * s['supply'], 'W')}",
+              f"after conduction and switching, {_at(lm.P_IDLE_REF, 'W')} at ±20 V (× {v_high:.4g} V / 20 V: "
+              f"{_at(lm.p_idle(v_high), 'W')}), less the LM4651's own 36 mA (|I_VCC+| + |I_VEE−|) × "
+              f"{v_high:.4g} V = {_at(lm.I_Q_4651 * v_high, 'W')}",
               (p_set, "W"), f"{here}: thermal model (model.heat)"),
         equation_step(f"Heat sink needed to hold T_j at {t_target:g} °C", "lm4651-eq11",
                       {"T_{jmax}": (t_target, "°C"), "T_{a}": (s["t_ambient"], "°C"), "P_D": (p_set, "W"),

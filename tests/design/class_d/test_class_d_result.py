@@ -1,6 +1,7 @@
 """The class-D design (handbook.design.class_d.result): the default by hand, the heat sink from the corner
 that sets it, and the joint design against an independent all-corner enumeration (tests/oracles.py, sharing
 no code with handbook.design); implausible and bad specs."""
+import itertools
 import math
 
 import pytest
@@ -114,13 +115,13 @@ def test_heat_sink_is_sized_at_what_the_amplifier_can_deliver():
        ser=st.sampled_from(["E12", "E24", "E96"]), objective=st.sampled_from(["efficiency", "heat_sink"]),
        ripple=st.floats(0.05, 1.0), f_audio=st.sampled_from([200.0, 500.0, 2000.0]), dcr=st.floats(50, 2000),
        q_max=st.floats(0.7, 1.5), l_ser=st.sampled_from(["E6", "E12"]), band=st.sampled_from([22e3, 80e3, 150e3]),
-       l_tol=st.sampled_from([0.1, 0.3]))
+       l_tol=st.sampled_from([0.1, 0.3]), v_tol=st.sampled_from([0.0, 0.03, 0.08]))
 def test_class_d_equals_independent_enumeration(frac, r_load, t_a, thd, sink, pkg, ser, objective, ripple, f_audio,
-                                                 dcr, q_max, l_ser, band, l_tol):
+                                                 dcr, q_max, l_ser, band, l_tol, v_tol):
     spec = dict(p_out=frac * 130 * 4 / r_load ** 0.8, r_load=r_load, t_ambient=t_a, thd_max=thd,
                 theta_sa_available=sink, package=pkg, r_osc_series=ser, objective=objective, ripple_max=ripple,
                 f_audio=f_audio, l_dcr=dcr, q_max=q_max, l_series=l_ser, c_series=l_ser, thd_bandwidth=band,
-                l_tolerance=l_tol)
+                l_tolerance=l_tol, supply_tolerance=v_tol)
     expected = enumerate_class_d(spec)
     try:
         got = class_d.design(spec)
@@ -166,3 +167,44 @@ def test_bad_input_names_key_value_and_range():
         class_d.checked({"supply": 10.0})
     with pytest.raises(InputError, match="class_d.objective"):
         class_d.checked({"objective": "cost"})
+    # the rails' tolerance: +-22 V is the LM4651/LM4652's top (V+ + V- 44 V); say the tolerance that fits
+    with pytest.raises(InputError, match=r"supply_tolerance = 0.1 puts the rails at \+-18.9 V to \+-23.1 V.* at most "
+                                         r"0.0476 fits"):
+        class_d.checked({"supply": 21.0, "supply_tolerance": 0.1})
+
+
+def test_rails_tolerance_by_hand():
+    """+-20 V +-5 % for 110 W: clipping at +-19 V, THD+N, the residue, the coils' peak and the heat sink at +-21 V,
+    each by hand from the oracle's own clipping fit."""
+    r = class_d.design({"supply_tolerance": 0.05, "p_out": 110.0})
+    assert (r.r_osc, r.l_out, r.c_out, r.r_dly) == enumerate_class_d({"supply_tolerance": 0.05, "p_out": 110.0})
+    slow, fast = r.f_sw_min, r.f_sw_max
+    assert r.p_clip == pytest.approx(p_clip(fast, 4, 19.0)) and r.p_clip >= 110
+    assert p_clip(fast, 4, r.supply_least) == pytest.approx(110.0)  # the least rail delivers p_out exactly
+    assert 18.5 < r.supply_least < 19.0  # below the low rail: 111.6 W there
+    worst = 0.0  # the residue's worst corner at +-21 V: 8 x 21 V / pi / sqrt2 through the loaded filter
+    for f, lo, co in itertools.product((slow, fast), (0.9 * r.l_out, 1.1 * r.l_out), (0.95 * r.c_out, 1.05 * r.c_out)):
+        w = 2 * math.pi * f
+        worst = max(worst, 168 / math.pi / math.sqrt(2) / abs(1 + 1j * w * 2 * lo / 4 - w * w * 2 * lo * co))
+    assert r.figures["ripple"] == pytest.approx(worst)
+    x5 = 361e-9 * 125e3
+    idle = (5 / 0.55 - 5 - 2 * 0.2 * 5 / 4 - x5 * 5 / (1 - x5)) * 21 / 20 - 0.036 * 21
+    need = []
+    for f in (slow, fast):
+        p, x = p_clip(f, 4, 21.0) / 8, 401e-9 * f
+        need.append(90 / (x * p / (1 - x) + idle + 2 * 0.3 * (1 + 0.002 * 115) * p / 4) - 2.2)
+    assert r.theta_sa_required == pytest.approx(min(need), rel=1e-9)
+    nominal = class_d.design({"p_out": 110.0})  # exact rails: more clipping power, a smaller heat sink needed
+    assert nominal.p_clip > r.p_clip and nominal.theta_sa_required > r.theta_sa_required
+
+
+def test_rails_the_default_can_take():
+    """125 W at +-20 V -5 % does not clip-free: the design says the tolerance that fits, and it does."""
+    with pytest.raises(Infeasible) as exc:
+        class_d.design({"supply_tolerance": 0.05})
+    most = exc.value.achievable["supply_tolerance_max"]
+    assert 0.02 < most < 0.05 and f"supply_tolerance at most {most:.3g}" in str(exc.value)
+    fits = class_d.design({"supply_tolerance": most - 1e-4})  # the oracle's clipping fit at the rail said
+    assert p_clip(fits.f_sw_max, 4, 20 * (1 - most)) == pytest.approx(125.0, rel=1e-3)
+    with pytest.raises(Infeasible):
+        class_d.design({"supply_tolerance": most + 1e-3})

@@ -15,6 +15,8 @@ DEV = lm4651.DEVICE
 #: heat sinks for a TO-220 run from about 30 K/W (small clip-on) down to about 0.5 K/W (a large extrusion
 #: in free air; lower needs a fan): outside that range the design warns (a market survey, not the datasheet)
 THETA_SA_MADE = (0.5, 30.0)
+#: the highest rail the LM4651/LM4652 is rated for, +-V (operating ratings: V+ + V- at most 44 V)
+SUPPLY_TOP = lm4651.SUPPLY_TOTAL[1] / 2
 #: the datasheet's typical application (figure 1 and its text): R_OSC 3.9 k (Example Design, from eq 6),
 #: R_DLY 5 k (recommended), L 50 uH and C_BYP 5 uF (Output Stage Filtering)
 DATASHEET_PARTS = {"r_osc": 3.9e3, "l_out": 50e-6, "c_out": 5e-6, "r_dly": 5e3}
@@ -113,16 +115,17 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
     elif need < THETA_SA_MADE[0]:
         out.append(f"heat sink of {need:.2f} K/W needed: below about {THETA_SA_MADE[0]:g} K/W a TO-220 needs a "
                    "very large extrusion or forced air")
-    p_max = lm4651.p_clip(fig["f_sw_min"], s["r_load"], s["supply"])
+    p_max = lm4651.p_clip(fig["f_sw_min"], s["r_load"], model.rails(s)[1])
     if s["p_continuous"] is not None and s["p_continuous"] > p_max:
         out.append(f"p_continuous = {s['p_continuous']:g} W is more than the amplifier can deliver "
-                   f"({p_max:.0f} W at the slowest oscillator corner): the heat sink is larger than needed")
+                   f"({p_max:.0f} W at the slowest oscillator corner and the high rail): the heat sink is larger than needed")
     if s["p_continuous"] is not None and s["p_continuous"] < s["p_out"]:
         out.append(f"p_continuous = {s['p_continuous']:g} W is below p_out = {s['p_out']:g} W: the heat sink "
                    "cannot carry the rated output continuously")
     bw, f_slow = s["thd_bandwidth"], fig["f_sw_min"]
     if bw <= f_slow < BRICK_WALL_GUARD * bw:
-        share = lm4651.residue_fraction(f_slow, l_out, c_out, s["thd_test_power"], s["r_load"], s["supply"])
+        share = lm4651.residue_fraction(f_slow, l_out, c_out, s["thd_test_power"], s["r_load"],
+                                        model.rails(s)[1])
         out.append(f"the slowest oscillator corner, {f_slow / 1e3:.4g} kHz, lies just above the THD+N analyser's "
                    f"{bw / 1e3:g} kHz band: the THD+N model counts the switching residue only inside the band (a "
                    f"brick-wall filter); a real analyser's band-limiting filter passes part of the residue, "
@@ -166,6 +169,22 @@ SHOW = {"THD+N": ("THD+N", "thd_n", "{:.3%}", "thd_max"), "clipping": ("clipping
         "heat sink": ("theta_SA", "theta_sa_required", "{:.2f} K/W", "theta_sa_available")}
 
 
+def _rail_reach(s: dict, ev: dict, achievable: dict) -> str:
+    """What the rails must be for the best candidate's clipping power to reach p_out (the clipping power goes as
+    V_s squared): its lowest rail, and the supply_tolerance this supply allows."""
+    least = float(ev["supply_least"])
+    achievable["supply_least"] = least
+    low = model.rails(s)[0]
+    text = f" at the low rail ±{low:.4g} V" if s["supply_tolerance"] else ""
+    if least > SUPPLY_TOP:
+        return text + f"; it needs rails of ±{least:.4g} V, above the LM4651/LM4652's ±{SUPPLY_TOP:g} V"
+    text += f"; it needs rails of at least ±{least:.4g} V"
+    if least <= s["supply"]:
+        achievable["supply_tolerance_max"] = 1 - least / s["supply"]
+        text += f" (supply_tolerance at most {1 - least / s['supply']:.3g} with supply = {s['supply']:g} V)"
+    return text
+
+
 def _heat_sink_reach(s: dict, ev: dict, achievable: dict) -> str:
     """What the heat sink asked for (an ideal one, 0 K/W, if none) can carry with the best candidate: the
     largest p_continuous at this ambient, the hottest ambient (when above the schema's -40 C), and whether
@@ -176,7 +195,7 @@ def _heat_sink_reach(s: dict, ev: dict, achievable: dict) -> str:
     t_target = DEV["tj_max"] - s["tj_margin"]
     watts = (t_target - s["t_ambient"]) / (ev["theta_sa_required"] + path)  # the best candidate's dissipation
     text = ""
-    p_max = float(lm4651.p_clip(DEV["f_min"], s["r_load"], s["supply"]))
+    p_max = float(lm4651.p_clip(DEV["f_min"], s["r_load"], model.rails(s)[1]))
     if s["p_continuous"] is not None and s["p_continuous"] > p_max:
         achievable["p_deliverable"] = p_max
         text += (f"; p_continuous = {s['p_continuous']:g} W is more than the amplifier can deliver: about "
@@ -257,6 +276,8 @@ def infeasible(s: dict, r_dly: float, searched=None):
                      f"{fmt.format(asked)}")
         parts.append(f"{label}: best {fmt.format(ev[key])} (asked {shown})")
         achievable[key] = ev[key]
+        if k == "clipping":
+            parts[-1] += _rail_reach(s, ev, achievable)
         if k == "heat sink":
             parts[-1] += _heat_sink_reach(s, ev, achievable)
     if not reach:  # each check can be met alone, but not together: the candidate closest to meeting all

@@ -47,6 +47,43 @@ def corner_factors(s: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return fo, 1 + s["l_tolerance"] * CORNERS[:, 1], 1 + s["c_tolerance"] * CORNERS[:, 2]
 
 
+def rails(s: dict) -> tuple[float, float]:
+    """The rails' two ends: every figure the design judges is monotonic in V_s, so each is worst at one end (the
+    clipping power rises with V_s squared: worst at the low rail; THD+N, the residue, the coils' peak and the
+    LM4652's dissipation all grow with V_s: worst at the high one). Exact, not an assumption of the corners.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units); ``supply`` (V) and ``supply_tolerance`` are read.
+
+    Returns
+    -------
+    tuple of float
+        (low rail, high rail), V: ``supply`` x (1 -+ ``supply_tolerance``).
+    """
+    return s["supply"] * (1 - s["supply_tolerance"]), s["supply"] * (1 + s["supply_tolerance"])
+
+
+def supply_least(s: dict, f_fast) -> float:
+    """The lowest rail at which the fast oscillator corner still delivers max(p_out, the THD+N test power)
+    unclipped: the clipping power goes as V_s squared (:func:`~handbook.sources.lm4651.circuit.p_clip`).
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units).
+    f_fast : float or numpy.ndarray
+        The oscillator's fast corner, Hz.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The least rail V_s, V.
+    """
+    return s["supply"] * (p_unclipped(s) / lm4651.p_clip(f_fast, s["r_load"], s["supply"])) ** 0.5
+
+
 def osc_corners(f_nom, r_dly, slow, fast, r_tol):
     """The oscillator's slow and fast corners: eq 5 with R_OSC and R_DLY each at its ``r_tolerance`` corner
     (f = 1e9 / (4000 + R_OSC - 0.4 R_DLY): slowest with R_OSC high and R_DLY low), times the table's spread
@@ -145,15 +182,16 @@ CLIP_SHARE = {"iec_1_8": 1 / 8, "continuous_sine": 1.0}
 
 
 def thermal_power(s: dict, f):
-    """The output power the heat sink is sized at, W: 1/8 of the clipping power at f (``thermal_basis`` =
-    'iec_1_8', IEC 62368-1 Annex E's normal operating condition), or a continuous sine at ``p_continuous``
-    (default: the clipping power at f, all the amplifier can deliver) for 'continuous_sine'.
+    """The output power the heat sink is sized at, W: 1/8 of the clipping power at f and the high rail
+    (``thermal_basis`` = 'iec_1_8', IEC 62368-1 Annex E's normal operating condition), or a continuous sine at
+    ``p_continuous`` (default: the clipping power at f and the high rail, all the amplifier can deliver) for
+    'continuous_sine'.
 
     Parameters
     ----------
     s : dict
-        The checked ``[class_d]`` table (SI units); ``thermal_basis``, ``p_continuous`` (W), ``r_load`` (ohm) and
-        ``supply`` (V) are read.
+        The checked ``[class_d]`` table (SI units); ``thermal_basis``, ``p_continuous`` (W), ``r_load`` (ohm),
+        ``supply`` (V) and ``supply_tolerance`` are read.
     f : float or numpy.ndarray
         The oscillator frequency, Hz (arrays broadcast).
 
@@ -164,18 +202,46 @@ def thermal_power(s: dict, f):
     """
     if s["thermal_basis"] == "continuous_sine" and s["p_continuous"] is not None:
         return s["p_continuous"] + 0 * f
-    return CLIP_SHARE[s["thermal_basis"]] * lm4651.p_clip(f, s["r_load"], s["supply"])
+    return CLIP_SHARE[s["thermal_basis"]] * lm4651.p_clip(f, s["r_load"], rails(s)[1])
+
+
+def loss_terms(s: dict, f, t_j) -> dict:
+    """The LM4652's dissipation term by term at oscillator frequency f and junction temperature t_j, carrying
+    :func:`thermal_power` at the high rail: eq 9 and 10 with ``t_overmod``, conduction with R_DS(on) maximum at
+    t_j (scaled to ``rds_on_25``), and the idle share.
+
+    Parameters
+    ----------
+    s : dict
+        The checked ``[class_d]`` table (SI units; temperatures in C).
+    f : float or numpy.ndarray
+        The oscillator frequency, Hz (arrays broadcast).
+    t_j : float or numpy.ndarray
+        The junction temperature, C.
+
+    Returns
+    -------
+    dict
+        ``p_out`` (W, the power carried), ``fraction`` (eq 9's x), ``rds_on`` (ohm), ``switching``,
+        ``conduction``, ``idle`` and ``total`` (W), broadcast over ``f`` and ``t_j``.
+    """
+    p = thermal_power(s, f)
+    rds = lm4651.rds_on_max(t_j) * s["rds_on_25"] / lm4651.RDS_ON_MAX_25
+    out = {"p_out": p, "fraction": lm4651.switching_loss_fraction(f, t_overmod=s["t_overmod"]), "rds_on": rds,
+           "switching": lm4651.p_switch(f, p, t_overmod=s["t_overmod"]),
+           "conduction": lm4651.p_conduction(p, s["r_load"], rds), "idle": lm4651.p_idle_4652(rails(s)[1]) + 0 * p}
+    out["total"] = out["switching"] + out["conduction"] + out["idle"]
+    return out
 
 
 def heat(s: dict, f, theta_sa=None, bare=False):
     """(theta_SA needed, T_j with theta_SA, LM4652 dissipation at that T_j) at oscillator frequency f.
 
-    The LM4652 carries :func:`thermal_power` at f (the thermal basis), eq 9
-    and 10 with the 350 ns over-modulation time, conduction with R_DS(on) maximum at T_j, and its idle
-    share. P(T_j) is linear in T_j, so T_j = (T_a + theta P0) / (1 - theta k) exactly (inf: no steady
-    state). ``bare``: no heat sink, the package alone at the thermal table's theta_JA; where that steady
-    state would pass T_jmax (or there is none) the shutdown trips, and T_j reads T_a + theta_JA P(T_jmax),
-    where the junction heads at R_DS(on)'s T_jmax value: above T_jmax, finite.
+    The LM4652's dissipation is :func:`loss_terms`' total, linear in T_j through R_DS(on):
+    P(T_j) = P0 + k T_j, so T_j = (T_a + theta P0) / (1 - theta k) exactly (inf: no steady state). ``bare``: no
+    heat sink, the package alone at the thermal table's theta_JA; where that steady state would pass T_jmax (or
+    there is none) the shutdown trips, and T_j reads T_a + theta_JA P(T_jmax), where the junction heads at
+    R_DS(on)'s T_jmax value: above T_jmax, finite.
 
     Parameters
     ----------
@@ -195,26 +261,23 @@ def heat(s: dict, f, theta_sa=None, bare=False):
         no steady state (``bare``: the package alone, and past T_jmax the shutdown's reading described above);
         the LM4652's dissipation at that T_j, W), each broadcast over ``f``.
     """
-    p = thermal_power(s, f)
-    a = (lm4651.p_switch(f, p, t_overmod=s["t_overmod"]) + lm4651.p_idle_4652(s["supply"]))
-    b = 2 * p / s["r_load"] * s["rds_on_25"] / lm4651.RDS_ON_MAX_25  # W per ohm of the maximum R_DS(on)
+    def total(t):
+        return loss_terms(s, f, t)["total"]
+
     path = DEV["theta_jc"][s["package"]] + s["theta_cs"]
-    t_target = DEV["tj_max"] - s["tj_margin"]
-    need = (t_target - s["t_ambient"]) / (a + b * lm4651.rds_on_max(t_target)) - path
+    need = (DEV["tj_max"] - s["tj_margin"] - s["t_ambient"]) / total(DEV["tj_max"] - s["tj_margin"]) - path
     sink = need if theta_sa is None else theta_sa
     theta = lm4651.THETA_JA[s["package"]] if bare else path + sink
-    k = b * lm4651.RDS_ON_MAX_25 * lm4651.RDS_TC
-    p0 = a + b * lm4651.RDS_ON_MAX_25 * (1 - 25.0 * lm4651.RDS_TC)
+    p0, k = total(0.0), total(1.0) - total(0.0)  # exact: the total is linear in T_j
     runaway = theta * k >= 1
     tj = np.where(runaway, np.inf, (s["t_ambient"] + theta * p0) / np.where(runaway, 1.0, 1 - theta * k))
     if bare:
-        hot = s["t_ambient"] + theta * (a + b * lm4651.rds_on_max(DEV["tj_max"]))
-        tj = np.where(tj <= DEV["tj_max"], tj, hot)
-    return need, tj, a + b * lm4651.rds_on_max(tj)
+        tj = np.where(tj <= DEV["tj_max"], tj, s["t_ambient"] + theta * total(DEV["tj_max"]))
+    return need, tj, total(tj)
 
 
 def efficiency(s: dict, f_nom, l_out):
-    """Efficiency at p_out, typical parts at the nominal frequency: conduction with the Example Design's
+    """Efficiency at p_out, typical parts at the nominal frequency and rails: conduction with the Example Design's
     230 mOhm hot, eq 9/10 with the typical 310 ns, the idle loss and the coils (system table: 85 % at
     125 W).
 
@@ -322,7 +385,8 @@ def thermal(s: dict, f_slow, f_fast):
 
 
 def per_corner(s: dict, f_slow, f_fast, l_out, c_out) -> dict:
-    """The figures judged at the eight corners of the oscillator, L and C (last axis), before the worst is taken.
+    """The figures judged at the eight corners of the oscillator, L and C (last axis), before the worst is taken,
+    at the high rail (:func:`rails`: each grows with V_s).
 
     Parameters
     ----------
@@ -343,7 +407,7 @@ def per_corner(s: dict, f_slow, f_fast, l_out, c_out) -> dict:
     _, lo, co = corner_factors(s)
     f = np.where(CORNERS[:, 0] < 0, np.asarray(f_slow)[..., None], np.asarray(f_fast)[..., None])
     l, c = np.asarray(l_out)[..., None] * lo, np.asarray(c_out)[..., None] * co
-    rl, vs = s["r_load"], s["supply"]
+    rl, vs = s["r_load"], rails(s)[1]
     return {"f": f, "l": l, "c": c,
             "THD+N": lm4651.thd_n_measured(f, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"]),
             "ripple": lm4651.ripple_rms(f, l, c, rl, vs), "filter Q": lm4651.filter_q(l, c, rl),
@@ -398,7 +462,8 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
     dict
         Arrays, one entry per candidate: ``f_sw``, ``f_sw_min``, ``f_sw_max`` (nominal and corner frequencies,
         Hz), ``thd_n`` (fraction), ``ripple`` (V rms), ``band_deviation`` (dB), ``q`` (pure number),
-        ``i_peak`` (A), ``p_clip`` (W, fast corner), ``theta_sa_required`` (K/W), ``t_junction`` and
+        ``i_peak`` (A), ``p_clip`` (W, fast corner, low rail), ``supply_least`` (V: :func:`supply_least`),
+        ``theta_sa_required`` (K/W), ``t_junction`` and
         ``t_junction_no_sink`` (C), ``p_dissipation`` (W), ``dead_time`` (s), ``efficiency`` (fraction);
         ``margins`` {check of :data:`CHECKS`: margin, a fraction of its limit, negative where it fails} and
         ``ok`` (bool: every margin holds).
@@ -408,10 +473,10 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
     f_nom = lm4651.f_sw_for(r_osc, r_dly)
     f_slow, f_fast = osc_corners(f_nom, r_dly, s["osc_tol_slow"], s["osc_tol_fast"], s["r_tolerance"])
     per = per_corner(s, f_slow, f_fast, l_out, c_out)
-    rl, vs = s["r_load"], s["supply"]
+    rl, v_low = s["r_load"], rails(s)[0]
     thd, ripple, q, i_pk = (per[k].max(-1) for k in ("THD+N", "ripple", "filter Q", "inductor peak"))
     dev = band_deviation_box_db(s, l_out, c_out)
-    p_clip = lm4651.p_clip(f_fast, rl, vs)
+    p_clip = lm4651.p_clip(f_fast, rl, v_low)
     need, tj, p_d, tj_bare = thermal(s, f_slow, f_fast)
     t_dead = lm4651.dead_time_total(r_dly * (1 - s["r_tolerance"]))  # R_DLY at its low corner
     sink = 0.0 if s["theta_sa_available"] is None else s["theta_sa_available"]
@@ -426,7 +491,8 @@ def figures(s: dict, r_osc, l_out, c_out, r_dly) -> dict:
     for m in margins.values():
         ok &= m >= -1e-12
     return {"f_sw": f_nom, "f_sw_min": f_slow, "f_sw_max": f_fast, "thd_n": thd, "ripple": ripple,
-            "band_deviation": dev, "q": q, "i_peak": i_pk, "p_clip": p_clip, "theta_sa_required": need,
+            "band_deviation": dev, "q": q, "i_peak": i_pk, "p_clip": p_clip, "supply_least": supply_least(s, f_fast),
+            "theta_sa_required": need,
             "t_junction": tj, "p_dissipation": p_d, "t_junction_no_sink": tj_bare, "dead_time": t_dead,
             "efficiency": efficiency(s, f_nom, l_out), "margins": margins, "ok": ok}
 

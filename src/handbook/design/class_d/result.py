@@ -4,7 +4,8 @@ heat sink, chosen together.
 Problem. Choose R_OSC (``r_osc_series``), L (``l_series``) and C_BYP (``c_series``) to maximise the
 efficiency at p_out (``objective = "efficiency"``) or the heat sink's allowed theta_SA (``"heat_sink"``),
 subject at the worst of eight tolerance corners (oscillator slow/fast from eq 5 against the datasheet
-table, L and C each +-tolerance; :mod:`~handbook.design.class_d.model`) to: THD+N at ``thd_test_power`` as
+table, L and C each +-tolerance; :mod:`~handbook.design.class_d.model`) and at the worse rail end (low for
+clipping, high for the rest: each figure is monotonic in V_s) to: THD+N at ``thd_test_power`` as
 the analyser reads it (the switching residue added when an oscillator corner lies inside its
 ``thd_bandwidth``); no clipping at p_out (nor at the test point); the switching residue at the load; the
 loaded filter flat across the audio band over the whole L, C tolerance box (exact, not only its corners)
@@ -44,6 +45,8 @@ from .model import best, grid
 TABLE = "class_d"
 DEV = lm4651.DEVICE
 L_RANGE, C_RANGE, R_DLY_RANGE = model.L_RANGE, model.C_RANGE, model.R_DLY_RANGE
+#: the LM4651/LM4652's operating rails, +-V
+SUPPLY_RANGE = tuple(v / 2 for v in lm4651.SUPPLY_TOTAL)
 #: the incumbent's window around IPOPT's optimum, a factor either way on f, L and C
 SPREAD = 1.5
 #: scales of the solver's variables: f in 100 kHz, L in 100 uH, C in 10 uF
@@ -71,7 +74,8 @@ class ClassDResult(Result):
     audio_band: str = reported('', 'audio band')
     f_corner: float = reported('Hz', "output filter's corner, 1/(2 pi sqrt(2 L C_BYP))")
     thd_n: float = reported('%', "THD+N at the test point (in the analyser's band)")
-    p_clip: float = reported('W', 'clipping power')
+    p_clip: float = reported('W', 'clipping power (fastest oscillator corner, low rail)')
+    supply_least: float = reported('V', 'lowest rail that still delivers p_out unclipped (fastest corner)')
     binding: str = reported('', 'binding')
     warnings: list = reported('', 'warnings')
     figures: dict
@@ -107,6 +111,12 @@ def checked(spec: Mapping | None) -> Table:
         raise InputError(f"{TABLE}.p_continuous = {s['p_continuous']:g} W is a continuous sine power: give it with "
                          f"{TABLE}.thermal_basis = \"continuous_sine\" (the basis is {s['thermal_basis']!r}, 1/8 of the "
                          "clipping power by IEC 62368-1 Annex E)")
+    low, high = model.rails(s)
+    if low < SUPPLY_RANGE[0] or high > SUPPLY_RANGE[1]:
+        raise InputError(f"{TABLE}.supply = {s['supply']:g} V with {TABLE}.supply_tolerance = {s['supply_tolerance']:g} "
+                         f"puts the rails at +-{low:.4g} V to +-{high:.4g} V, outside the LM4651/LM4652's operating "
+                         f"+-{SUPPLY_RANGE[0]:g} V to +-{SUPPLY_RANGE[1]:g} V (V+ + V- 22 V to 44 V): a tolerance of at most "
+                         f"{min(1 - SUPPLY_RANGE[0] / s['supply'], SUPPLY_RANGE[1] / s['supply'] - 1):.3g} fits this supply")
     return checked_table(TABLE, s)
 
 
@@ -164,7 +174,8 @@ def r_dly_for(s: dict) -> float:
 
 def _params(s: dict, r_dly: float) -> list[float]:
     """The spec and R_DLY as the NLP's parameter vector (in the order of NAMES)."""
-    p = {"p_out": s["p_out"], "r_load": s["r_load"], "supply": s["supply"], "t_a": s["t_ambient"],
+    p = {"p_out": s["p_out"], "r_load": s["r_load"], "v_low": model.rails(s)[0],
+         "v_high": model.rails(s)[1], "t_a": s["t_ambient"],
          "path": s["theta_cs"] + DEV["theta_jc"][s["package"]], "sink": s["theta_sa_available"] or 0.0,
          "thd_max": s["thd_max"], "p_test": s["thd_test_power"], "w_cont": float(s["p_continuous"] is not None),
          "clip_share": model.CLIP_SHARE[s["thermal_basis"]],
@@ -180,8 +191,8 @@ def _params(s: dict, r_dly: float) -> list[float]:
 
 def _theta_needed(f, P):
     """theta_SA needed at oscillator frequency f (symbolic twin of model.heat)."""
-    pc = P["w_cont"] * P["p_cont"] + (1 - P["w_cont"]) * P["clip_share"] * lm4651.p_clip(f, P["r_load"], P["supply"])
-    watts = (lm4651.p_switch(f, pc, t_overmod=P["t_om"]) + lm4651.p_idle_4652(P["supply"])
+    pc = P["w_cont"] * P["p_cont"] + (1 - P["w_cont"]) * P["clip_share"] * lm4651.p_clip(f, P["r_load"], P["v_high"])
+    watts = (lm4651.p_switch(f, pc, t_overmod=P["t_om"]) + lm4651.p_idle_4652(P["v_high"])
              + 2 * pc / P["r_load"] * P["rds25"] * (1 + lm4651.RDS_TC * (P["t_target"] - 25.0)))
     return (P["t_target"] - P["t_a"]) / watts - P["path"]
 
@@ -197,7 +208,7 @@ def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, flo
            ("oscillator range", fast / DEV["f_max"], -ca.inf, 1.0)]
     if above:
         out.append(("analyser band", slow / P["band"], 1.0, ca.inf))
-    rl, vs = P["r_load"], P["supply"]
+    rl, vs = P["r_load"], P["v_high"]  # each figure below grows with the rails (model.rails)
     for so, sl, sc in model.CORNERS:
         fc = slow if so < 0 else fast
         lc, cc = l_out * (1 + sl * P["tol_l"]), c_out * (1 + sc * P["tol_c"])
@@ -215,7 +226,7 @@ def _constraints(f, l_out, c_out, P, above: bool) -> list[tuple[str, object, flo
     l_star = ca.fmin(ca.fmax(lm4651.filter_worst_peak_l(P["f_audio"], c_hi, rl), l_out * (1 - P["tol_l"])),
                      l_out * (1 + P["tol_l"]))
     out.append(("audio band", lm4651.filter_gain2(P["f_audio"], l_star, c_hi, rl) / P["g_band"], -ca.inf, 1.0))
-    out.append(("clipping", lm4651.p_clip(fast, rl, vs) / P["p_need"], 1.0, ca.inf))
+    out.append(("clipping", lm4651.p_clip(fast, rl, P["v_low"]) / P["p_need"], 1.0, ca.inf))
     return out
 
 
@@ -224,9 +235,9 @@ def _corners(f, P):
     return model.osc_corners(f, P["r_dly"], P["tol_slow"], P["tol_fast"], P["tol_r"])
 
 
-NAMES = ("p_out", "r_load", "supply", "t_a", "path", "sink", "thd_max", "p_test", "w_cont", "clip_share", "p_cont", "tol_slow",
-         "tol_fast", "tol_r", "r_dly", "tol_l", "tol_c", "f_audio", "g_band", "q_max", "ripple_max", "i_max", "dcr", "t_target",
-         "rds25", "t_om", "band", "p_need")
+NAMES = ("p_out", "r_load", "v_low", "v_high", "t_a", "path", "sink", "thd_max", "p_test", "w_cont", "clip_share", "p_cont",
+         "tol_slow", "tol_fast", "tol_r", "r_dly", "tol_l", "tol_c", "f_audio", "g_band", "q_max", "ripple_max", "i_max", "dcr",
+         "t_target", "rds25", "t_om", "band", "p_need")
 
 
 @functools.lru_cache(maxsize=4)
@@ -400,7 +411,7 @@ def design(spec: dict | None = None) -> ClassDResult:
         thermal_basis=_basis_text(s), p_thermal=p_thermal, needs_heat_sink=hot,
         t_junction_no_sink=None if hot else fig["t_junction_no_sink"], audio_band=_band_text(s),
         f_corner=float(lm4651.filter_f0(l_out, c_out)),
-        thd_n=fig["thd_n"],
-        p_clip=fig["p_clip"], binding=binding_text(sol, fig), warnings=warnings(s, fig, l_out, c_out),
+        thd_n=fig["thd_n"], p_clip=fig["p_clip"], supply_least=fig["supply_least"], binding=binding_text(sol, fig),
+        warnings=warnings(s, fig, l_out, c_out),
         figures=fig, continuous=(float(sol.x[0]), float(sol.x[1]), float(sol.x[2])),
         band=(fig["f_sw_min"], fig["f_sw_max"]))

@@ -108,7 +108,8 @@ def class_d(result) -> Model:
     -------
     Model
         Inputs ``r_osc``, ``r_dly`` (ohm, +-``r_tolerance``; R_DLY only where one is fitted), ``osc`` (the
-        oscillator's factor on eq 5), ``l``, ``c``; quantities ``f_sw`` (Hz, limits the LM4651's range),
+        oscillator's factor on eq 5), ``l``, ``c``, ``v_s`` (V, +-``supply_tolerance``, only where it is not 0);
+        quantities ``f_sw`` (Hz, limits the LM4651's range),
         ``dead_time`` (s, limit ``dead_time_min``), ``p_clip`` (W, at least ``p_out`` and the test power),
         ``i_peak`` (A, at most ``i_sat`` / 1.2 and 10 A), ``f_corner`` (Hz, no limit), ``q`` (limit ``q_max``),
         ``ripple`` (V rms, limit ``ripple_max``) and ``thd_n`` (fraction, limit ``thd_max``). The band's flatness
@@ -128,14 +129,18 @@ def class_d(result) -> Model:
                    + UNIFORM, unit="H"),
             Source("c", "C_BYP", co * (1 - s["c_tolerance"]), co * (1 + s["c_tolerance"]), co, "capacitor tolerance",
                    f"class_d.c_tolerance = {s['c_tolerance']:g} (film, J); " + UNIFORM, unit="F"))
+    st = s["supply_tolerance"]
+    if st:  # the rails' tolerance, where the spec gives one
+        srcs += (Source("v_s", "±V_S rails", vs * (1 - st), vs * (1 + st), vs, "supply tolerance",
+                        f"class_d.supply_tolerance = {st:g}; both rails taken equal; " + UNIFORM, unit="V"),)
 
-    def f(osc, l, c, r_osc, r_dly=0.0):
+    def f(osc, l, c, r_osc, r_dly=0.0, v_s=vs):
         fs = lm4651.f_sw_for(r_osc, r_dly) * osc
         return {"f_sw": fs, "dead_time": lm4651.dead_time_total(r_dly) + 0 * osc, "f_corner": lm4651.filter_f0(l, c),
                 "q": lm4651.filter_q(l, c, rl),
-                "ripple": lm4651.ripple_rms(fs, l, c, rl, vs), "p_clip": lm4651.p_clip(fs, rl, vs),
-                "i_peak": lm4651.inductor_peak(fs, l, c, lm4651.v_clip_peak(fs, rl, vs), rl, vs, s["f_audio"]),
-                "thd_n": lm4651.thd_n_measured(fs, l, c, s["thd_test_power"], rl, vs, s["thd_bandwidth"])}
+                "ripple": lm4651.ripple_rms(fs, l, c, rl, v_s), "p_clip": lm4651.p_clip(fs, rl, v_s),
+                "i_peak": lm4651.inductor_peak(fs, l, c, lm4651.v_clip_peak(fs, rl, v_s), rl, v_s, s["f_audio"]),
+                "thd_n": lm4651.thd_n_measured(fs, l, c, s["thd_test_power"], rl, v_s, s["thd_bandwidth"])}
 
     measures = (Measure("f_sw", "switching frequency", "Hz", lm4651.DEVICE["f_min"], lm4651.DEVICE["f_max"],
                         "oscillator range"),

@@ -328,6 +328,7 @@ C_DEAD = 1.7e-12  # F: eq 4's slope, 1.7 pF per ohm of R_DLY
 RDS_ON_MAX_25 = 0.300  # ohm: LM4652 table, R_DS(on) maximum at 25 C
 RDS_TC = (DEVICE["rds_on_hot"] / 0.200 - 1) / (100.0 - 25.0)  # 1/K: 200 mOhm typ at 25 C -> 230 at 100 C
 T_OVERMOD_MAX = 350e-9  # s: no maximum printed; the Example Design's own 350 ns (typical 310 ns)
+SUPPLY_TOTAL = (22.0, 44.0)  # V: operating ratings, V+ + V- (the rails +-11 V to +-22 V)
 I_LIMIT = 10.0  # A: "the inductor ripple current and the peak output current must be lower than 10 amps"
 I_Q_4651 = 36e-3  # A: LM4651 table, quiescent current with the LM4652 not connected, |I_VCC+| + |I_VEE-| (typical)
 L_REF, C_REF = 50e-6, 5e-6  # H, F: Output Stage Filtering, "a 50 uH inductor and a 5 uF Mylar capacitor"
