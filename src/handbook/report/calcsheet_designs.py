@@ -401,10 +401,11 @@ def converter(r) -> list:
 def _core_loss_step(r, s, shape: dict, material: dict, here: str):
     """The iGSE core loss with its numbers, at the point of the largest loss (supply and hot corner)."""
     from ..design.converter import coil as cl
-    from ..design.converter.operating import HOT, corner
 
-    op = {"l1_max": r.l1_max, "i_peak_max": r.i_peak_max, "hot": tuple(corner(s, ends) for ends in HOT)}
-    pt = max(cl.core_loss_points(material, shape, op, r.turns), key=lambda x: x["loss"])
+    pt = r.coil.core_loss_at
+    if pt is None:  # no supply point where the converter switches at full load
+        return words("Core loss: the converter does not switch at full load anywhere in the supply range",
+                     (r.core_loss, "W"), f"{here}: iGSE (coil.core_loss)")
     rng, inside = cl.steinmetz_range(material, pt["f"])
     k_i, a, b, c_t = cl.igse_coefficients(material, pt["f"])
     density = pt["loss"] / shape["ve"]

@@ -45,6 +45,7 @@ class Coil:
     temperature_rise: float | None
     fails: str  # "" when it meets everything, else why not
     limits: tuple = ()  # the limits it fails: "saturation", "bobbin", "gap", "temperature rise"
+    core_loss_at: dict | None = None  # the point of the largest core loss (core_loss_points' figures), if any
 
     @property
     def ok(self) -> bool:
@@ -301,10 +302,10 @@ def gap_for(shape: dict, reluctance: float) -> float | None:
     return math.exp(math.log(xs[k - 1]) + w * (math.log(xs[k]) - math.log(xs[k - 1])))
 
 
-def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tuple[float, list[float]]:
+def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tuple[float, list[dict]]:
     """The iGSE core loss (W) at the largest flux swing (L_max, I_peak,max), the largest over the supply range
-    at full load and over V_CE(sat)'s and V_F's ends (V12(H) high: the ``hot`` corners), and the frequencies it
-    was evaluated at.
+    at full load and over V_CE(sat)'s and V_F's ends (V12(H) high: the ``hot`` corners), and the points it was
+    evaluated at.
 
     Parameters
     ----------
@@ -324,11 +325,11 @@ def core_loss(material: dict, shape: dict, s: dict, op: dict, turns: int) -> tup
     Returns
     -------
     tuple
-        (the core loss, W, the largest over nine supply points at each hot corner; the full-load frequencies it
-        was evaluated at, Hz, a list: the supply points where the converter switches).
+        (the core loss, W, the largest over nine supply points at each hot corner; the points it was evaluated at,
+        a list of :func:`core_loss_points`' dicts: the supply points where the converter switches).
     """
     points = core_loss_points(material, shape, op, turns)
-    return max((pt["loss"] for pt in points), default=0.0), [pt["f"] for pt in points]
+    return max((pt["loss"] for pt in points), default=0.0), points
 
 
 def core_loss_points(material: dict, shape: dict, op: dict, turns: int) -> list[dict]:
@@ -491,7 +492,7 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
     wire = fitting[-1]
     r_dc = n * shape["mlt"] * wire["r_per_m_hot"] * copper
     p_cu = op["i_rms"] ** 2 * r_dc
-    p_core, _ = core_loss(material, shape, s, op, n)
+    p_core, points = core_loss(material, shape, s, op, n)
     rise = shape["r_th"] * (p_cu + p_core)
     sat = b_sat(material, s["t_ambient"] + rise)
     margin = 1 - b_narrow / sat
@@ -509,6 +510,7 @@ def wind(shape_name: str, material_name: str, s: dict, op: dict, n: int, table: 
         limits.append("current density")
     return Coil(**base, b_sat=sat, saturation_margin=margin, wire=wire["name"], wire_diameter=wire["d_cu"],
                 current_density=density, r_dc=r_dc, core_loss=p_core,
+                core_loss_at=max(points, key=lambda pt: pt["loss"], default=None),
                 winding_loss=p_cu, temperature_rise=rise, fails="; ".join(fails), limits=tuple(limits))
 
 

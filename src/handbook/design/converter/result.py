@@ -384,7 +384,8 @@ def warnings(s: dict, op: dict, c: Coil) -> list[str]:
                    f"{eng(op['f_sw_min'], 'Hz')}: the coil may be heard (at lighter loads the regulator's feedback "
                    "pauses it, in bursts slower still); a higher f_min or a lower v_supply_max moves it out")
     material = table["materials"][c.material]
-    _, freqs = core_loss(material, table["shapes"][c.shape], s, op, c.turns)
+    _, points = core_loss(material, table["shapes"][c.shape], s, op, c.turns)
+    freqs = [pt["f"] for pt in points]
     outside = [f for f in freqs if not steinmetz_range(material, f)[1]]
     if outside:
         rng = material["steinmetz"]
