@@ -10,7 +10,10 @@ import sys
 
 import pytest
 
+from handbook.core.units import eng
 from handbook.design import bom, spec
+
+from oracles import p_clip
 
 #: the derating convention the BOM states, written out again: 50 % of the rating at the highest ambient, the
 #: resistor rating falling linearly from 70 C to zero at 155 C; the BZX79's 500 mW from 50 C to zero at 200 C
@@ -94,14 +97,20 @@ def test_every_rating_covers_its_worst_case_stress(case):
     sd = cd.spec
     v_hi = sd["supply"] * (1 + sd["supply_tolerance"])  # the high rail
     assert table["A3-C1"]["voltage_rating"] * HALF >= 2 * v_hi
-    # C_BYP's rms current: the clipping sine (sqrt(P_clip R_L) V rms, P_clip at the low rail, so scaled to the high
-    # one) at the top of the band, C 5 % high, with the coils' ripple (V_s / (2 L f) peak to peak at the slow corner,
-    # L low, the high rail; rms a 2 sqrt(3)th), at 50 %
-    v_clip = (cd.p_clip * sd["r_load"]) ** 0.5 * (1 + sd["supply_tolerance"]) / (1 - sd["supply_tolerance"])
-    i_c = math.hypot(v_clip * 2 * math.pi * sd["f_audio"] * cd.c_out * (1 + sd["c_tolerance"]),
-                     v_hi / (2 * cd.l_out * (1 - sd["l_tolerance"]) * cd.f_sw_min) / (2 * math.sqrt(3)))
+    # C_BYP's rms current: the largest clipping sine (sqrt(P_clip R_L) V rms at the slow corner and the high rail, by
+    # the oracle's own fit of the datasheet's points) at the top of the band, C 5 % high, with the coils' ripple
+    # (V_s / (2 L f) peak to peak at the slow corner, L low, the high rail; rms a 2 sqrt(3)th), at 50 %
+    v_clip = (p_clip(cd.f_sw_min, sd["r_load"], v_hi) * sd["r_load"]) ** 0.5
+    ripple = v_hi / (2 * cd.l_out * (1 - sd["l_tolerance"]) * cd.f_sw_min) / (2 * math.sqrt(3))
+    i_c = math.hypot(v_clip * 2 * math.pi * sd["f_audio"] * cd.c_out * (1 + sd["c_tolerance"]), ripple)
     assert table["A3-C1"]["current_rating"] * HALF == pytest.approx(i_c, rel=1e-9)
     assert table["A3-L1"]["current_rating"] >= 1.2 * float(cd.figures["i_peak"])
+    # the coils' rms at the thermal basis: the slower corner's (more clipping power, so the larger) audio and the ripple
+    basis = 1 / 8 if sd["thermal_basis"] == "iec_1_8" else 1.0
+    i_rms = math.hypot((basis * p_clip(cd.f_sw_min, sd["r_load"], v_hi) / sd["r_load"]) ** 0.5, ripple)
+    assert f"rms ≥ {eng(i_rms, 'A')} at the thermal basis" in table["A3-L1"]["rating_text"]
+    # the flyback Schottkys (the datasheet's D1, 3 A 50 V): each sees 2 V_s, at 50 %
+    assert table["A3-D1"]["voltage_rating"] * HALF >= 2 * v_hi and table["A3-D1"]["current_rating"] == 3.0
     assert table["A3-L1"]["current_rating"] != cd.spec["i_sat"]  # the design's peak, not the input copied
     assert table["A4-L1"]["current_rating"] > cv.i_peak_max
     assert table["A3-HS1"]["rating_text"].startswith(f"θ_SA at most {cd.theta_sa_required:.3g} K/W")

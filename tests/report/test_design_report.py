@@ -65,6 +65,7 @@ def test_template_report_numbers_are_design_json_s(template, tmp_path):
         wc = worst[table]["worstcase"]
         assert wc["n"] == 100_000 and 0 <= wc["yield_all"] <= min(wc["yields"].values(), default=1.0)
         for q in wc["quantities"]:
+            assert q["unit"] != "%"  # JSON carries fractions ("1"); per cent is the page's way of showing them
             for field in ("nominal", "eva_low", "eva_high", "rss_low", "rss_high", "mc_low", "mc_high"):
                 key = f"wc.{table}.{q['key']}.{field.replace('_', '.')}"
                 assert set(shown[key]) == {float(q[field])}, (key, shown.get(key), q[field])

@@ -39,6 +39,10 @@ TDA5144_VP_MAX = 18.0
 #: the voltage across the LM4651's R_OSC and R_DLY, at most (an assumption: the pins set bias currents and the
 #: datasheet gives no pin voltage; 5 V bounds a bias reference of this kind)
 PIN_VOLTAGE = 5.0
+#: Schottky rectifiers' repetitive reverse voltage classes, V (a catalogue ladder: 40 V to 200 V parts are common)
+SCHOTTKY_VOLTAGES = (40.0, 60.0, 100.0, 150.0, 200.0)
+#: the LM4651/LM4652 datasheet's flyback diode, D1 (Recommendations for Critical External Components): 3 A, 50 V
+D1_SUGGESTED = (3.0, 50.0)
 #: the TDA5144's supply V_P, V (TDA5144 datasheet: 4 V to 18 V)
 TDA5144_VP = (4.0, TDA5144_VP_MAX)
 #: the LM358's supply, single, V (TI LM358 datasheet, SLOS068, recommended operating conditions: 3 V to 32 V)
@@ -208,9 +212,42 @@ def _zener_name(v: float) -> str:
     return "BZX79-C" + (text.replace(".", "V") if "." in text else text + "V")
 
 
+def _flyback_diodes(sheet: str, v_c: float, rail_text: str, i_peak: float, q_dead: float) -> dict:
+    """The LM4652's flyback Schottkys: the bridge's 2 V_s reverse, 50 % derating; the coil current in the dead time
+    (``q_dead``: the share of a period a clamp diode can conduct, at most)."""
+    v_d = next(v for v in SCHOTTKY_VOLTAGES if v_c <= ratings.DERATING * v * (1 + 1e-12))
+    return _row(sheet, "D1 D2 D3 D4", "flyback Schottky diode, from each bridge output to each rail", "Schottky", "",
+                voltage=v_d, current=D1_SUGGESTED[0], stress=v_c, technology="fast Schottky rectifier",
+                package="SMC or DO-201 class",
+                rating_text=f"V_RRM ≥ {v_d:g} V: the output swings {rail_text}, {v_c:.4g} V across a diode, 50 % "
+                            f"derating (the datasheet's own {D1_SUGGESTED[1]:g} V part runs at "
+                            f"{v_c / D1_SUGGESTED[1] * 100:.0f} %); "
+                            f"I_F(AV) {D1_SUGGESTED[0]:g} A as the datasheet suggests: a diode carries the coil current, up to "
+                            f"{eng(i_peak, 'A')}, only in the dead time ({q_dead * 100:.2f} % of a period at most), so its "
+                            f"repetitive peak must reach {eng(i_peak, 'A')}",
+                reason="the datasheet's D1, protecting the output MOSFETs from flyback voltages; four, one per output "
+                       "and rail, is the bridge's clamp (an assumption: the datasheet's figure names D1 only)")
+
+
+def _filter_currents(cd) -> tuple[float, float, float]:
+    """(the coils' rms at the thermal basis, C_BYP's audio rms, the ripple's rms), A. The coils: the larger corner's
+    audio (the slow corner clips higher) with the triangular ripple at the slow corner, L low and the high rail
+    (V_s / (2 L f) peak to peak, rms a 2 sqrt(3)th). C_BYP: the clipping sine at the top of the band (C high, the
+    largest clipping power: the slow corner at the high rail), and the same ripple, which it takes."""
+    from ..sources.lm4651 import circuit as lm4651
+    from .class_d import model
+
+    s, v_high = cd.spec, model.rails(cd.spec)[1]
+    p_th_max = max(float(model.thermal_power(s, f)) for f in (cd.f_sw_min, cd.f_sw_max))
+    c_hi, l_lo = cd.c_out * (1 + s["c_tolerance"]), cd.l_out * (1 - s["l_tolerance"])
+    i_audio_c = (float(lm4651.p_clip(cd.f_sw_min, s["r_load"], v_high)) * s["r_load"]) ** 0.5 * 2 * math.pi * s["f_audio"] * c_hi
+    i_ripple_c = v_high / (2 * l_lo * cd.f_sw_min) / (2 * 3 ** 0.5)
+    return math.hypot((p_th_max / s["r_load"]) ** 0.5, i_ripple_c), i_audio_c, i_ripple_c
+
+
 def class_d_rows(cd) -> list[dict]:
     """The class-D parts: the LM4651 (U1) and LM4652 (U2), R_OSC (R1), R_DLY (R2), the filter's two inductors
-    (L1, L2) and C_BYP (C1), and the heat sink (HS1), numbered on their sheet.
+    (L1, L2) and C_BYP (C1), the flyback diodes (D1 to D4) and the heat sink (HS1), numbered on their sheet.
 
     Parameters
     ----------
@@ -230,19 +267,13 @@ def class_d_rows(cd) -> list[dict]:
     t_a = s["t_ambient"]
     i_peak = float(fig["i_peak"])
     i_sat = ratings.SATURATION_MARGIN * i_peak
-    i_rms = (cd.p_thermal / s["r_load"]) ** 0.5
-    v_low, v_high = model.rails(s)
+    v_high = model.rails(s)[1]
     v_c = 2 * v_high
     rail_text = f"±{s['supply']:g} V" + (f" ± {s['supply_tolerance'] * 100:.3g} % (up to ±{v_high:.4g} V)"
                                          if s["supply_tolerance"] else "")
     v_rating = ratings.capacitor_voltage(v_c, film=True)
     pin = PIN_VOLTAGE ** 2  # R_OSC and R_DLY each carry at most PIN_VOLTAGE
-    # C_BYP's rms current: the clipping sine across it at the top of the band (C high, the fast corner's clipping
-    # at the high rail) and the coils' triangular ripple at the slow corner with L low and the high rail, which the
-    # capacitor takes (D = 1/2: V_s/(2 L f) peak to peak, rms a 2 sqrt(3)th of it)
-    c_hi, l_lo = cd.c_out * (1 + s["c_tolerance"]), cd.l_out * (1 - s["l_tolerance"])
-    i_audio_c = (cd.p_clip * s["r_load"]) ** 0.5 * v_high / v_low * 2 * math.pi * s["f_audio"] * c_hi
-    i_ripple_c = v_high / (2 * l_lo * cd.f_sw_min) / (2 * 3 ** 0.5)
+    i_rms, i_audio_c, i_ripple_c = _filter_currents(cd)
     i_c1 = math.hypot(i_audio_c, i_ripple_c)
     supply_text = (f"supply V+ + V− {lm4651.SUPPLY_TOTAL[0]:g} V to {lm4651.SUPPLY_TOTAL[1]:g} V, T_A −40 °C to +85 °C (LM4651/"
                    f"LM4652 operating ratings): {rail_text} is {v_c:.4g} V, at {t_a:g} °C ambient")
@@ -268,9 +299,11 @@ def class_d_rows(cd) -> list[dict]:
              current=i_sat, stress=i_peak, technology="powder or gapped ferrite core, low-loss at the switching "
              "frequency", package="power inductor",
              rating_text=f"saturation ≥ {eng(i_sat, 'A')} (1.2 × the worst peak {eng(i_peak, 'A')}, audio plus "
-                         f"ripple at clipping; the design held the peak to i_sat = {eng(s['i_sat'], 'A')} over 1.2; a shorted "
+                         f"ripple at clipping; the design held the peak to i_sat = {eng(s['i_sat'], 'A')} over 1.2; "
+                         "a shorted "
                          f"output reaches the LM4651's 10 A limit first); rms ≥ "
-                         f"{eng(i_rms, 'A')} at the thermal basis; DCR ≤ {eng(s['l_dcr'] * cd.l_out, 'Ω')}",
+                         f"{eng(i_rms, 'A')} at the thermal basis (the slower corner's audio and the ripple); DCR ≤ "
+                         f"{eng(s['l_dcr'] * cd.l_out, 'Ω')}",
              reason=f"{s['l_series']} value; the filter's corner {eng(cd.f_corner, 'Hz')}"),
         _row(sheet, "C1", "C_BYP, output filter capacitor", cd.c_out, "F", s["c_tolerance"], voltage=v_rating,
              current=i_c1 / ratings.DERATING, stress=v_c, technology="polyester or polypropylene film (the datasheet's "
@@ -280,6 +313,7 @@ def class_d_rows(cd) -> list[dict]:
                          f"{eng(i_c1, 'A')} (the clipping sine at the top of the band, {eng(i_audio_c, 'A')}, and the "
                          f"coils' ripple, {eng(i_ripple_c, 'A')}), 50 % derating",
              reason=f"{s['c_series']} value; across the load"),
+        _flyback_diodes(sheet, v_c, rail_text, i_peak, float(fig["dead_time"]) * cd.f_sw_max),
         _row(sheet, "HS1", "LM4652 heat sink", f"≤ {cd.theta_sa_required:.3g} K/W", "K/W",
              rating_text=f"θ_SA at most {cd.theta_sa_required:.3g} K/W: the LM4652 dissipating {eng(p_set, 'W')} at "
                          f"the oscillator corner that sets it, T_j {model.DEV['tj_max'] - s['tj_margin']:g} °C, "

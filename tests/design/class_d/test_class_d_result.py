@@ -41,7 +41,15 @@ def test_default_design_by_hand():
     x = 361e-9 * f
     loss = 125 / 4 * 0.46 + x * 125 / (1 - x) + lm4651.P_IDLE_REF + 125 / 4 * 2 * 300 * r.l_out
     assert r.efficiency == pytest.approx(125 / (125 + loss))
-    assert r.t_junction == pytest.approx(140.0) and r.warnings == []
+    assert r.t_junction == pytest.approx(140.0)
+    # the coils' worst peak: the audio at the slow corner's clipping (top of the band, C high) plus half the ripple
+    # at the slow corner, L low: above the LM4652's 8 A minimum saturation drain current (its table), said
+    lo, ch = 0.9 * r.l_out, 1.05 * r.c_out
+    peak = max((2 * 4 * p_clip(f, 4, 20)) ** 0.5 * math.hypot(1 / 4, 2 * math.pi * 500 * c) + 20 / (4 * l * f)
+               for f in (slow, fast) for l in (lo, 1.1 * r.l_out) for c in (ch, 0.95 * r.c_out))
+    assert r.figures["i_peak"] == pytest.approx(peak) and peak > 8
+    assert len(r.warnings) == 1 and r.warnings[0].startswith(f"the coils' worst peak, {peak:.2f} A, is above the "
+                                                              "LM4652's minimum saturation drain current, 8 A")
     assert "THD+N" in r.binding
 
 
@@ -142,7 +150,8 @@ def test_implausible_designs_still_design_with_warnings():
         class_d.design({"t_ambient": 85.0, "thermal_basis": "continuous_sine"})
     assert 65 < exc.value.achievable["t_ambient_max"] < 85 and "ambient of at most" in str(exc.value)
     # the 8 ohm example's slowest corner (83.7 kHz) sits 5 % above the analyser's 80 kHz band: the residue there,
-    # 8 x 20 V / pi / sqrt2 through the filter over sqrt(10 W x 8 ohm), is said, not counted as a brick wall does
+    # 8 x 20 V / pi / sqrt2 through the filter (L and C at their low ends) over sqrt(10 W x 8 ohm), is said, not
+    # counted as a brick wall does
     import tomllib
     from pathlib import Path
 
@@ -150,7 +159,7 @@ def test_implausible_designs_still_design_with_warnings():
                                           "amplifier_8ohm.toml").read_text())["class_d"])
     said = [w for w in eight.warnings if "brick-wall" in w]
     assert 80e3 <= eight.f_sw_min < 120e3 and len(said) == 1 and "83.72 kHz" in said[0]
-    share = lm4651.ripple_rms(eight.f_sw_min, eight.l_out, eight.c_out, 8.0, eight.spec["supply"]) / (10 * 8) ** 0.5
+    share = lm4651.ripple_rms(eight.f_sw_min, 0.9 * eight.l_out, 0.95 * eight.c_out, 8.0, 20.0) / (10 * 8) ** 0.5
     assert f"{share * 100:.2f} % of the test signal" in said[0]
     assert not [w for w in class_d.design().warnings if "brick-wall" in w]  # 61 kHz: inside the band, counted
     # a hot board designs (its heat sink holds T_j), but the parts are rated to 85 C only (operating ratings): said
@@ -159,6 +168,15 @@ def test_implausible_designs_still_design_with_warnings():
         "t_ambient = 90 °C: outside the LM4651/LM4652's operating range, \N{MINUS SIGN}40 to 85 °C (datasheet "
         "operating ratings); the heat sink holds T_j, but the parts are not rated there"]
     assert not [w for w in class_d.design({"t_ambient": 85.0 - 1e-9}).warnings if "operating range" in w]
+    # rails near the absolute maximum (+-22 V, the operating top too), and the LM4652 past its 32 W
+    near = class_d.design({"supply": 21.0, "supply_tolerance": 0.047})
+    assert [w for w in near.warnings if "absolute maximum ±22 V" in w] == [
+        "the high rail, ±21.99 V, is 99.9 % of the LM4651/LM4652's absolute maximum ±22 V (also the top of the operating "
+        "range): the supply's ripple, load dump and switching spikes add to it; measure the rails on the board"]
+    assert not [w for w in class_d.design().warnings if "absolute maximum ±22 V" in w]  # +-20 V: 90.9 %
+    full = class_d.design({"p_out": 110.0, "supply_tolerance": 0.05, "thermal_basis": "continuous_sine"})
+    assert full.p_dissipation > 32 and [w for w in full.warnings if "above its absolute maximum 32 W" in w]
+    assert class_d.design().p_dissipation < 32 and not [w for w in class_d.design().warnings if "32 W" in w]
 
 
 
@@ -182,6 +200,8 @@ def test_rails_tolerance_by_hand():
     assert r.p_clip == pytest.approx(p_clip(fast, 4, 19.0)) and r.p_clip >= 110
     assert p_clip(fast, 4, r.supply_least) == pytest.approx(110.0)  # the least rail delivers p_out exactly
     assert 18.5 < r.supply_least < 19.0  # below the low rail: 111.6 W there
+    # a small p_out: the test power (10 W) sets it, and never below the LM4651/LM4652's +-11 V operating minimum
+    assert class_d.design({"p_out": 5.0}).supply_least == 11.0
     worst = 0.0  # the residue's worst corner at +-21 V: 8 x 21 V / pi / sqrt2 through the loaded filter
     for f, lo, co in itertools.product((slow, fast), (0.9 * r.l_out, 1.1 * r.l_out), (0.95 * r.c_out, 1.05 * r.c_out)):
         w = 2 * math.pi * f

@@ -17,6 +17,8 @@ DEV = lm4651.DEVICE
 THETA_SA_MADE = (0.5, 30.0)
 #: the highest rail the LM4651/LM4652 is rated for, +-V (operating ratings: V+ + V- at most 44 V)
 SUPPLY_TOP = lm4651.SUPPLY_TOTAL[1] / 2
+#: a rail above this share of the absolute maximum is warned of (a judgement: 5 % for ripple and spikes)
+RAIL_WARN = 0.95
 #: the datasheet's typical application (figure 1 and its text): R_OSC 3.9 k (Example Design, from eq 6),
 #: R_DLY 5 k (recommended), L 50 uH and C_BYP 5 uF (Output Stage Filtering)
 DATASHEET_PARTS = {"r_osc": 3.9e3, "l_out": 50e-6, "c_out": 5e-6, "r_dly": 5e3}
@@ -81,7 +83,7 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
         The checked ``[class_d]`` table (SI units; temperatures in C).
     fig : dict
         The design's figures as plain floats (:func:`~handbook.design.class_d.model.at`): ``theta_sa_required``
-        (K/W), ``f_sw_min`` (Hz) and ``i_peak`` (A) are read.
+        (K/W), ``f_sw_min`` (Hz), ``i_peak`` (A) and ``p_dissipation`` (W) are read.
     l_out : float
         The filter inductors' L, H.
     c_out : float
@@ -94,7 +96,8 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
         none needed at all, a ``p_continuous`` above what the amplifier delivers or below ``p_out``, a load
         outside the models' 4 to 8 ohm, C_BYP above 50 uF, L above ten times the datasheet's 50 uH, an ambient
         outside the parts' operating range (:data:`T_A_RATED`), a slowest oscillator corner just above the THD+N
-        analyser's band (:data:`BRICK_WALL_GUARD`).
+        analyser's band (:data:`BRICK_WALL_GUARD`); the high rail above :data:`RAIL_WARN` of the absolute
+        maximum, the coils' peak above the LM4652's 8 A minimum saturation current, its dissipation above 32 W.
     """
     out = []
     need, path = fig["theta_sa_required"], DEV["theta_jc"][s["package"]] + s["theta_cs"]
@@ -124,12 +127,14 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
                    "cannot carry the rated output continuously")
     bw, f_slow = s["thd_bandwidth"], fig["f_sw_min"]
     if bw <= f_slow < BRICK_WALL_GUARD * bw:
-        share = lm4651.residue_fraction(f_slow, l_out, c_out, s["thd_test_power"], s["r_load"],
-                                        model.rails(s)[1])
+        # the residue at that corner with L and C at their low ends (the filter well above its corner: the largest)
+        share = lm4651.residue_fraction(f_slow, l_out * (1 - s["l_tolerance"]), c_out * (1 - s["c_tolerance"]),
+                                        s["thd_test_power"], s["r_load"], model.rails(s)[1])
         out.append(f"the slowest oscillator corner, {f_slow / 1e3:.4g} kHz, lies just above the THD+N analyser's "
-                   f"{bw / 1e3:g} kHz band: the THD+N model counts the switching residue only inside the band (a "
-                   f"brick-wall filter); a real analyser's band-limiting filter passes part of the residue, "
-                   f"{share * 100:.2f} % of the test signal unattenuated, against thd_max = {s['thd_max'] * 100:.2f} %")
+                   f"{bw / 1e3:g} kHz band ({(f_slow / bw - 1) * 100:.1f} % above it): the THD+N model counts the switching "
+                   f"residue only inside the band (a brick-wall filter); a real analyser's band-limiting filter passes "
+                   f"part of the residue, {share * 100:.2f} % of the test signal unattenuated at that corner (L and "
+                   f"C_BYP at their low ends), against thd_max = {s['thd_max'] * 100:.2f} %")
     if not T_A_RATED[0] <= s["t_ambient"] <= T_A_RATED[1]:
         low, high = (f"{v:g}".replace("-", "\N{MINUS SIGN}") for v in T_A_RATED)
         out.append(f"t_ambient = {s['t_ambient']:g} °C: outside the LM4651/LM4652's operating range, {low} to "
@@ -142,6 +147,28 @@ def warnings(s: dict, fig: dict, l_out: float, c_out: float) -> list[str]:
     if l_out > 10 * lm4651.L_REF:
         out.append(f"L = {l_out * 1e6:.3g} uH: ten times the datasheet's 50 uH; a choke carrying "
                    f"{fig['i_peak']:.1f} A at that inductance is large")
+    return out + _ratings(s, fig)
+
+
+def _ratings(s: dict, fig: dict) -> list[str]:
+    """The LM4651/LM4652's absolute maximum ratings against this design's stresses, where they come close: the
+    rails against +-22 V, the coils' worst peak against the LM4652's 8 A minimum saturation drain current, the
+    dissipation against its 32 W."""
+    out, high = [], model.rails(s)[1]
+    if high > RAIL_WARN * lm4651.SUPPLY_ABS_MAX:
+        out.append(f"the high rail, ±{high:.4g} V, is {high / lm4651.SUPPLY_ABS_MAX * 100:.1f} % of the LM4651/LM4652's "
+                   f"absolute maximum ±{lm4651.SUPPLY_ABS_MAX:g} V (also the top of the operating range): the supply's "
+                   "ripple, load dump and switching spikes add to it; measure the rails on the board")
+    if fig["i_peak"] > lm4651.I_D_SAT_MIN:
+        out.append(f"the coils' worst peak, {fig['i_peak']:.2f} A, is above the LM4652's minimum saturation drain "
+                   f"current, {lm4651.I_D_SAT_MIN:g} A (10 A typical, at V_GS 6 V; LM4652 table): a part at that minimum "
+                   "limits the peak and clips early (the datasheet's own 125 W, 50 µH example peaks near 8.7 A); the "
+                   "peak is mostly the audio current at clipping, so only a lower supply or a higher-impedance load "
+                   "lowers it much")
+    if fig["p_dissipation"] > lm4651.P_D_MAX_4652:
+        out.append(f"the LM4652 dissipates {fig['p_dissipation']:.1f} W, above its absolute maximum "
+                   f"{lm4651.P_D_MAX_4652:g} W (absolute maximum ratings) even with the heat sink holding T_j: a "
+                   "lower thermal basis or p_continuous, or a lower supply")
     return out
 
 

@@ -67,7 +67,8 @@ def rails(s: dict) -> tuple[float, float]:
 
 def supply_least(s: dict, f_fast) -> float:
     """The lowest rail at which the fast oscillator corner still delivers max(p_out, the THD+N test power)
-    unclipped: the clipping power goes as V_s squared (:func:`~handbook.sources.lm4651.circuit.p_clip`).
+    unclipped: the clipping power goes as V_s squared (:func:`~handbook.sources.lm4651.circuit.p_clip`); never
+    below the LM4651/LM4652's operating minimum, +-11 V (V+ + V- 22 V), where it stops working whatever the power.
 
     Parameters
     ----------
@@ -81,7 +82,8 @@ def supply_least(s: dict, f_fast) -> float:
     float or numpy.ndarray
         The least rail V_s, V.
     """
-    return s["supply"] * (p_unclipped(s) / lm4651.p_clip(f_fast, s["r_load"], s["supply"])) ** 0.5
+    v = s["supply"] * (p_unclipped(s) / lm4651.p_clip(f_fast, s["r_load"], s["supply"])) ** 0.5
+    return np.maximum(v, lm4651.SUPPLY_TOTAL[0] / 2)
 
 
 def osc_corners(f_nom, r_dly, slow, fast, r_tol):

@@ -75,7 +75,8 @@ class ClassDResult(Result):
     f_corner: float = reported('Hz', "output filter's corner, 1/(2 pi sqrt(2 L C_BYP))")
     thd_n: float = reported('%', "THD+N at the test point (in the analyser's band)")
     p_clip: float = reported('W', 'clipping power (fastest oscillator corner, low rail)')
-    supply_least: float = reported('V', 'lowest rail that still delivers p_out unclipped (fastest corner)')
+    supply_least: float = reported('V', 'lowest rail that still delivers p_out and the THD+N test power unclipped '
+                                        '(fastest corner; the LM4651/LM4652 works from +-11 V)')
     binding: str = reported('', 'binding')
     warnings: list = reported('', 'warnings')
     figures: dict

@@ -116,11 +116,12 @@ def as_json(wc: WorstCase) -> dict:
     -------
     dict
         ``n``, ``seed``, ``yield_all`` and ``yields`` ({limit: fraction}), ``binding``, ``quantities`` (one dict
-        each: key, label, unit, nominal, eva_low/high, rss_low/high, mc_low/high, limit_low/high), ``distributions``,
+        each: key, label, unit (a fraction's "1", where the report shows per cent), nominal, eva_low/high, rss_low/high,
+        mc_low/high, limit_low/high), ``distributions``,
         ``sensitivity`` (source, share, margin_if_halved, yield_if_halved) and ``drift`` (sentences).
     """
     return {"n": wc.n, "seed": wc.seed, "yield_all": wc.yield_all, "yields": dict(wc.yields), "binding": wc.binding,
-            "quantities": [dataclasses.asdict(q) for q in wc.quantities],
+            "quantities": [{**dataclasses.asdict(q), "unit": "1" if q.unit == "%" else q.unit} for q in wc.quantities],
             "distributions": [dataclasses.asdict(d) for d in wc.distributions],
             "sensitivity": [dataclasses.asdict(x) for x in wc.sensitivity], "drift": list(wc.drift)}
 

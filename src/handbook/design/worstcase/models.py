@@ -164,7 +164,9 @@ def class_d(result) -> Model:
              "the LM4652 table's 200 mΩ typical at 25 °C (the 230 mΩ is not in the table: erratum lm4651-t-rds), applied "
              "to the 300 mΩ maximum; the heat sink's corner carries it, not these quantities. The datasheet gives no "
              "other figure: power MOSFETs commonly rise faster, so a steeper part needs a larger heat sink. No ageing "
-             "figure is printed for any of these parts.")
+             "figure is printed for any of these parts.",
+             "Not sampled here: the audio band's flatness (the design checks it over the whole L, C tolerance box, "
+             "where corners would not bound it) and the heat sink (sized at its own worst corner).")
     return Model(srcs, measures, f, drift)
 
 

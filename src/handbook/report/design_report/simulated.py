@@ -175,7 +175,8 @@ def section(ctx) -> str:
                         [f"the worst of {figures['corners_searched']} by the circuit's own exact figures"]
                         if "corners_searched" in figures else [])
                     corners = f" ({', '.join(said)})" if said else ""
-                    out.append(f"<p>SPICE's worst corners meet the spec: <b>{'yes' if figures['meets_spec'] else 'no'}"
+                    out.append(f"<p>SPICE's worst corners meet the spec in the figures above: "
+                               f"<b>{'yes' if figures['meets_spec'] else 'no'}"
                                f"</b>{corners}.</p>")
                 ctx.spice_warnings.extend((t, f"SPICE: {w}") for w in checks.warnings(t, figures))
             else:

@@ -41,7 +41,7 @@ def quantities_table(t: str, wc) -> str:
 def yields_table(wc) -> str:
     """The share of the lot inside each limit, and inside all of them together."""
     rows = [[esc(name), _share(y)] for name, y in wc.yields.items()]
-    rows.append(["<b>every limit together</b>", f"<b>{_share(wc.yield_all)}</b>"])
+    rows.append(["<b>every limit above, together</b>", f"<b>{_share(wc.yield_all)}</b>"])
     return table(["limit", "share of the lot inside it"], rows, (1,))
 
 
@@ -75,8 +75,8 @@ def one(t: str, wc) -> str:
     kinds = sorted({d.kind for d in wc.distributions})
     out = [f"<h3>{esc(title(t))}</h3>",
            f"<p>Monte Carlo: {wc.n:,} samples, seed {wc.seed}, every part {' or '.join(kinds) or 'as stated'} inside "
-           f"the range the table <i>Distributions assumed</i> below gives it (with its source); every limit met "
-           f"together in {_share(wc.yield_all)} of them.</p>"]
+           f"the range the table <i>Distributions assumed</i> below gives it (with its source); every limit the next table "
+           f"lists met together in {_share(wc.yield_all)} of them.</p>"]
     if wc.yield_all < YIELD_WARN:
         out.append(f'<p class="warn"><b>Below {_share(YIELD_WARN)}:</b> at these distributions '
                    f"{_share(1 - wc.yield_all)} of the boards miss a limit (which, below); the design's corners do "
