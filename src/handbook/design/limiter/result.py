@@ -131,8 +131,11 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
         p_r7=float(v["i_trip_max"]) ** 2 * r7 * (1 - s["r7_tolerance"]), margin_low=m_lo, margin_high=m_hi,
         headroom_min=float(v["headroom_min"]), divider_current=float(v["divider_current"]),
         binding="the lowest trip current" if m_lo <= m_hi else "the highest trip current",
-        evaluated=found["evaluated"], r7_tried=found["tried"], margin_bound=found["bound"],
-        r7_proven=not found["unproven"], best_proven=found["proven"], unproven=found["unproven"],
+        evaluated=found["evaluated"], r7_tried=found["tried"],
+        # by yield the search's bound and proof are the shrunk box's, not the spec's: not reported as the spec's
+        margin_bound=found["bound"] if s["criterion"] == "corners" else None,
+        r7_proven=not found["unproven"] and s["criterion"] == "corners", best_proven=found["proven"],
+        unproven=found["unproven"],
         mc_yield=found.get("yield"), box_scale=found.get("scale"))
     result["v_drop"] = float(v["i_trip_max"]) * r7 * (1 - s["r7_tolerance"])  # I = V_cs / R7: highest at R7's low end
     if board and result["v_drop"] > s["v_drop_max"]:  # R7 is the smallest that meets the window: no larger one drops less
