@@ -302,3 +302,19 @@ def test_r1_drift_is_in_the_design_and_in_the_analysis_by_hand():
     cold = converter.design({"t_ambient": 25.0})  # no drift: a factor of 1, not an input
     assert r1_drift(cold.spec) == 0.0 and "R1 drift to t_ambient" not in {
         d.part for d in wc.analyse("converter", cold, n=1000, seed=1).distributions}
+
+
+def test_each_limit_names_the_tolerance_that_moves_it_most():
+    """The class-D filter's Q = R_L sqrt(C / (2 L)): to first order L's 10 % moves it by 5 %, C's 5 % by 2.5 %, so L
+    carries 0.05^2 / (0.05^2 + 0.025^2) = 80 % of its spread; its worst case is L low, C high; the list runs from
+    the least margin up."""
+    cd = designed("class_d")
+    w = analysed("class_d")
+    rows = {x.key: x for x in w.by_limit}
+    assert rows["q"].source == "inductor tolerance" and rows["q"].share == pytest.approx(0.8, abs=0.01)
+    q_worst = 4 * math.sqrt(1.05 * cd.c_out / (2 * 0.9 * cd.l_out))
+    assert rows["q"].margin == pytest.approx(1 - q_worst / cd.spec["q_max"], rel=1e-9)
+    assert rows["p_clip"].source == "oscillator" and rows["dead_time"].source == "R_OSC, R_DLY tolerance"
+    margins = [x.margin for x in w.by_limit]
+    assert margins == sorted(margins) and w.by_limit[0].key == w.binding
+    assert "f_corner" not in rows  # no limit, no row

@@ -150,7 +150,8 @@ def fake_analyse(table, result, n=100_000, seed=1, yield_all=0.9991):
         samples={q.key: q.nominal + rng.normal(0, (q.eva_high - q.nominal) / 4, 2000) for q in qs},
         distributions=[SimpleNamespace(part="L1", kind="uniform", low=0.9, high=1.1, cite="±10 % inductor", unit="")],
         sensitivity=[SimpleNamespace(source="L1 tolerance", share=0.62, margin_if_halved=0.31, yield_if_halved=0.99995)],
-        drift=["L1 loses 3 % of its inductance at 100 °C"])
+        drift=["L1 loses 3 % of its inductance at 100 °C"],
+        by_limit=[SimpleNamespace(key="ripple", margin=0.4, source="L1 tolerance", share=0.62)])
 
 
 @pytest.fixture(scope="module")
@@ -174,6 +175,9 @@ def test_partial_spec_reports_only_its_table_with_worst_case_and_spice(class_d_p
     assert "corner above 1.2 kHz" in page and "least worst-case margin: <b>switching residue" in page
     assert "Below 99.90 %" not in page  # 99.91 % of the lot: no warning
     assert page.count('id="wc-class_d-') >= 2 and "±10 % inductor" in page and "L1 tolerance" in page
+    # every limit with the tolerance moving it most, by its label
+    assert ('<td>switching residue at the load</td><td class="num">40.00 %</td><td>L1 tolerance</td>'
+            '<td class="num">62.00 %</td>') in page
     assert "L1 loses 3 %" in page and "100,000 samples" in page
     from handbook.spice import runner
 

@@ -134,7 +134,8 @@ def design(spec: dict | None = None, board: bool = True) -> LimiterResult:
         evaluated=found["evaluated"], r7_tried=found["tried"],
         # by yield the search's bound and proof are the shrunk box's, not the spec's: not reported as the spec's
         margin_bound=found["bound"] if s["criterion"] == "corners" else None,
-        r7_proven=not found["unproven"] and s["criterion"] == "corners", best_proven=found["proven"],
+        r7_proven=not found["unproven"] and s["criterion"] == "corners",
+        best_proven=found["proven"] and s["criterion"] == "corners",
         unproven=found["unproven"],
         mc_yield=found.get("yield"), box_scale=found.get("scale"))
     result["v_drop"] = float(v["i_trip_max"]) * r7 * (1 - s["r7_tolerance"])  # I = V_cs / R7: highest at R7's low end

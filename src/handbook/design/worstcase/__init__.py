@@ -55,6 +55,16 @@ class Distribution:
 
 
 @dataclass(frozen=True)
+class LimitSource:
+    """One limited quantity: its worst-case margin and the tolerance that moves it most."""
+
+    key: str
+    margin: float  # EVA, a fraction of its limit
+    source: str  # the tolerance group with the largest share of its first-order variance ("" if none moves it)
+    share: float
+
+
+@dataclass(frozen=True)
 class Sensitivity:
     """One tolerance: its share of the binding quantity's first-order variance, and the worst-case margin and
     Monte Carlo yield with its range halved."""
@@ -80,6 +90,7 @@ class WorstCase:
     n: int
     seed: int
     binding: str = ""  # the quantity the sensitivity's shares are of: the limited one of least EVA margin
+    by_limit: tuple = ()  # LimitSource per limited quantity, least margin first
 
     def quantity(self, key: str) -> Quantity:
         """The quantity of that key.
@@ -118,12 +129,14 @@ def as_json(wc: WorstCase) -> dict:
         ``n``, ``seed``, ``yield_all`` and ``yields`` ({limit: fraction}), ``binding``, ``quantities`` (one dict
         each: key, label, unit (a fraction's "1", where the report shows per cent), nominal, eva_low/high, rss_low/high,
         mc_low/high, limit_low/high), ``distributions``,
-        ``sensitivity`` (source, share, margin_if_halved, yield_if_halved) and ``drift`` (sentences).
+        ``sensitivity`` (source, share, margin_if_halved, yield_if_halved), ``drift`` (sentences) and ``by_limit``
+        (key, margin, source, share: every limited quantity's worst-case margin and the tolerance moving it most).
     """
     return {"n": wc.n, "seed": wc.seed, "yield_all": wc.yield_all, "yields": dict(wc.yields), "binding": wc.binding,
             "quantities": [{**dataclasses.asdict(q), "unit": "1" if q.unit == "%" else q.unit} for q in wc.quantities],
             "distributions": [dataclasses.asdict(d) for d in wc.distributions],
-            "sensitivity": [dataclasses.asdict(x) for x in wc.sensitivity], "drift": list(wc.drift)}
+            "sensitivity": [dataclasses.asdict(x) for x in wc.sensitivity], "drift": list(wc.drift),
+            "by_limit": [dataclasses.asdict(x) for x in wc.by_limit]}
 
 
 #: table -> its model builder, from a design's result
@@ -195,7 +208,8 @@ def analyse(table: str, result, n: int = N, seed: int = SEED) -> WorstCase:
         table=table, quantities=tuple(quantities), yields=per_limit, yield_all=overall, samples=samples,
         distributions=tuple(Distribution(src.part, src.kind, src.low, src.high, src.cite, src.unit) for src in m.sources),
         sensitivity=tuple(Sensitivity(*row) for row in engine.sensitivity(m, eva, draws)), drift=m.drift, n=n,
-        seed=seed, binding=getattr(engine.binding(m, eva), "key", ""))
+        seed=seed, binding=getattr(engine.binding(m, eva), "key", ""),
+        by_limit=tuple(LimitSource(*row) for row in engine.per_limit(m, eva)))
 
 
-__all__ = ["MODELS", "Distribution", "Quantity", "Sensitivity", "WorstCase", "analyse", "model"]
+__all__ = ["MODELS", "Distribution", "LimitSource", "Quantity", "Sensitivity", "WorstCase", "analyse", "model"]

@@ -316,6 +316,37 @@ def binding(model: Model, eva: dict) -> Measure | None:
     return min(limited)[2] if limited else None
 
 
+def per_limit(model: Model, eva: dict) -> list[tuple[str, float, str, float]]:
+    """For every limited quantity: its worst-case margin and the tolerance group with the largest share of its
+    first-order variance (:func:`effects`), least margin first.
+
+    Parameters
+    ----------
+    model : Model
+        The design's analysis model.
+    eva : dict
+        {quantity key: values at every corner} (:func:`corners`).
+
+    Returns
+    -------
+    list of tuple
+        (quantity key, its EVA margin as a fraction of its limit, the group, its share), least margin first; a
+        quantity no tolerance moves has the group "" and share 0.
+    """
+    eff = effects(model)
+    groups = list(dict.fromkeys(src.group for src in model.sources))
+    rows = []
+    for m in model.measures:
+        if m.limit_low is None and m.limit_high is None:
+            continue
+        var = {g: sum(eff[src.name][m.key] ** 2 for src in model.sources if src.group == g) for g in groups}
+        total = sum(var.values())
+        top = max(groups, key=lambda g: var[g]) if total > 0 else ""
+        rows.append((m.key, margin(m, float(eva[m.key].min()), float(eva[m.key].max())), top,
+                     var[top] / total if total > 0 else 0.0))
+    return sorted(rows, key=lambda r: r[1])
+
+
 def sensitivity(model: Model, eva: dict, draws: dict) -> list[tuple[str, float, float, float]]:
     """Per tolerance group: its share of the binding quantity's first-order variance, the worst-case margin and
     the Monte Carlo yield with that group's ranges halved (the same random numbers, scaled towards nominal).

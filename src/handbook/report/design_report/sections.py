@@ -169,7 +169,7 @@ def margins(t: str, result) -> list[tuple[str, str, float, str]]:
     else:
         found = _eva_margins(t, result)
         found += [(o.label, o.key, getattr(result, o.key), "the design's own") for o in OUTPUTS[t]
-                  if "margin" in o.key and o.unit == "%"
+                  if "margin" in o.key and o.unit == "%" and getattr(result, o.key) is not None
                   and not any(abs(getattr(result, o.key) - mg) < 1e-9 for _, _, mg, _ in found)]
     return found
 

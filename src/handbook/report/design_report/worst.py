@@ -100,6 +100,13 @@ def one(t: str, wc) -> str:
     out.append(table(["source", "share of the spread", "worst margin if its spread were halved", "yield if halved"],
                      [[esc(s.source), _share(s.share), _share(s.margin_if_halved), _share(s.yield_if_halved)]
                       for s in wc.sensitivity], (1, 2, 3)))
+    if wc.by_limit:
+        label = {q.key: q.label for q in wc.quantities}
+        out.append("<p>Every limit, least worst-case margin first, with the tolerance that moves it most (its share "
+                   "of that quantity's first-order spread):</p>")
+        out.append(table(["quantity", "worst-case margin", "moved most by", "its share"],
+                         [[esc(label.get(x.key, x.key)), _share(x.margin), esc(x.source or "none"), _share(x.share)]
+                          for x in wc.by_limit], (1, 3)))
     if wc.drift:
         out.append("<h4>Drift</h4><ul>" + "".join(f"<li>{esc(readable(s))}</li>" for s in wc.drift) + "</ul>")
     return "".join(out)
