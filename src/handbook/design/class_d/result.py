@@ -75,6 +75,11 @@ class ClassDResult(Result):
     f_corner: float = reported('Hz', "output filter's corner, 1/(2 pi sqrt(2 L C_BYP))")
     thd_n: float = reported('%', "THD+N at the test point (in the analyser's band)")
     p_clip: float = reported('W', 'clipping power (fastest oscillator corner, low rail)')
+    i_peak: float = reported('A', "coils' worst peak (audio at clipping plus half the ripple)")
+    ripple: float = reported('V', 'switching residue at the load, rms, worst corner')
+    q: float = reported('1', 'loaded filter Q, worst corner')
+    band_deviation: float = reported('dB', "filter's largest deviation across the audio band, whole tolerance box")
+    dead_time: float = reported('s', 'dead time, R_DLY at its low end')
     supply_least: float = reported('V', 'lowest rail that still delivers p_out and the THD+N test power unclipped '
                                         '(fastest corner; the LM4651/LM4652 works from +-11 V)')
     binding: str = reported('', 'binding')
@@ -412,7 +417,9 @@ def design(spec: dict | None = None) -> ClassDResult:
         thermal_basis=_basis_text(s), p_thermal=p_thermal, needs_heat_sink=hot,
         t_junction_no_sink=None if hot else fig["t_junction_no_sink"], audio_band=_band_text(s),
         f_corner=float(lm4651.filter_f0(l_out, c_out)),
-        thd_n=fig["thd_n"], p_clip=fig["p_clip"], supply_least=fig["supply_least"], binding=binding_text(sol, fig),
+        thd_n=fig["thd_n"], p_clip=fig["p_clip"], supply_least=fig["supply_least"], i_peak=fig["i_peak"],
+        ripple=fig["ripple"], q=fig["q"], band_deviation=fig["band_deviation"], dead_time=fig["dead_time"],
+        binding=binding_text(sol, fig),
         warnings=warnings(s, fig, l_out, c_out),
         figures=fig, continuous=(float(sol.x[0]), float(sol.x[1]), float(sol.x[2])),
         band=(fig["f_sw_min"], fig["f_sw_max"]))
