@@ -210,3 +210,19 @@ def test_yield_reports_no_proof_of_the_full_box():
     assert r.box_scale < 1 and r.margin_bound is None and r.r7_proven is False and r.best_proven is False
     full = limiter.design({"r7_tolerance": 0.1})
     assert full.r7_proven and full.margin_bound is not None and r.r7 < full.r7
+
+
+def test_yield_with_the_sense_resistor_pinned():
+    """R7 pinned at the value the yield search itself picks: a box exists where the full corners' input headroom
+    holds (the box's search is asked again for the headroom the full corners lack), so it designs; its lot is
+    re-judged here at the full tolerances, and its full-corner headroom is at least input_headroom."""
+    from handbook.design.limiter import by_yield
+    from handbook.design.limiter import model as net
+
+    free = limiter.design({"criterion": "yield", "r7_tolerance": 0.1})
+    pinned = limiter.design({"criterion": "yield", "r7_tolerance": 0.1, "r7": free.r7})
+    s = limiter.checked({"criterion": "yield", "r7_tolerance": 0.1, "r7": free.r7})
+    network = (pinned.r9, pinned.r10, pinned.r11, pinned.r12, pinned.r13)
+    assert pinned.r7 == free.r7 and float(net.verify(pinned.r7, network, s)["headroom_min"]) >= s["input_headroom"] - 1e-9
+    y = by_yield.lot_yield(pinned.r7, network, s, n=200_000, seed=5)
+    assert by_yield.meets(y, 200_000, s["yield_min"])
