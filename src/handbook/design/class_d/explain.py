@@ -15,8 +15,6 @@ DEV = lm4651.DEVICE
 #: heat sinks for a TO-220 run from about 30 K/W (small clip-on) down to about 0.5 K/W (a large extrusion
 #: in free air; lower needs a fan): outside that range the design warns (a market survey, not the datasheet)
 THETA_SA_MADE = (0.5, 30.0)
-#: the highest rail the LM4651/LM4652 is rated for, +-V (operating ratings: V+ + V- at most 44 V)
-SUPPLY_TOP = lm4651.SUPPLY_TOTAL[1] / 2
 #: a rail above this share of the absolute maximum is warned of (a judgement: 5 % for ripple and spikes)
 RAIL_WARN = 0.95
 #: the datasheet's typical application (figure 1 and its text): R_OSC 3.9 k (Example Design, from eq 6),
@@ -203,8 +201,8 @@ def _rail_reach(s: dict, ev: dict, achievable: dict) -> str:
     achievable["supply_least"] = least
     low = model.rails(s)[0]
     text = f" at the low rail ±{low:.4g} V" if s["supply_tolerance"] else ""
-    if least > SUPPLY_TOP:
-        return text + f"; it needs rails of ±{least:.4g} V, above the LM4651/LM4652's ±{SUPPLY_TOP:g} V"
+    if least > lm4651.RAILS[1]:
+        return text + f"; it needs rails of ±{least:.4g} V, above the LM4651/LM4652's ±{lm4651.RAILS[1]:g} V"
     text += f"; it needs rails of at least ±{least:.4g} V"
     if least <= s["supply"]:
         achievable["supply_tolerance_max"] = 1 - least / s["supply"]

@@ -83,7 +83,7 @@ def supply_least(s: dict, f_fast) -> float:
         The least rail V_s, V.
     """
     v = s["supply"] * (p_unclipped(s) / lm4651.p_clip(f_fast, s["r_load"], s["supply"])) ** 0.5
-    return np.maximum(v, lm4651.SUPPLY_TOTAL[0] / 2)
+    return np.maximum(v, lm4651.RAILS[0])
 
 
 def osc_corners(f_nom, r_dly, slow, fast, r_tol):

@@ -45,8 +45,6 @@ from .model import best, grid
 TABLE = "class_d"
 DEV = lm4651.DEVICE
 L_RANGE, C_RANGE, R_DLY_RANGE = model.L_RANGE, model.C_RANGE, model.R_DLY_RANGE
-#: the LM4651/LM4652's operating rails, +-V
-SUPPLY_RANGE = tuple(v / 2 for v in lm4651.SUPPLY_TOTAL)
 #: the incumbent's window around IPOPT's optimum, a factor either way on f, L and C
 SPREAD = 1.5
 #: scales of the solver's variables: f in 100 kHz, L in 100 uH, C in 10 uF
@@ -118,11 +116,11 @@ def checked(spec: Mapping | None) -> Table:
                          f"{TABLE}.thermal_basis = \"continuous_sine\" (the basis is {s['thermal_basis']!r}, 1/8 of the "
                          "clipping power by IEC 62368-1 Annex E)")
     low, high = model.rails(s)
-    if low < SUPPLY_RANGE[0] or high > SUPPLY_RANGE[1]:
+    if low < lm4651.RAILS[0] or high > lm4651.RAILS[1]:
         raise InputError(f"{TABLE}.supply = {s['supply']:g} V with {TABLE}.supply_tolerance = {s['supply_tolerance']:g} "
                          f"puts the rails at +-{low:.4g} V to +-{high:.4g} V, outside the LM4651/LM4652's operating "
-                         f"+-{SUPPLY_RANGE[0]:g} V to +-{SUPPLY_RANGE[1]:g} V (V+ + V- 22 V to 44 V): a tolerance of at most "
-                         f"{min(1 - SUPPLY_RANGE[0] / s['supply'], SUPPLY_RANGE[1] / s['supply'] - 1):.3g} fits this supply")
+                         f"+-{lm4651.RAILS[0]:g} V to +-{lm4651.RAILS[1]:g} V (V+ + V- 22 V to 44 V): a tolerance of at most "
+                         f"{min(1 - lm4651.RAILS[0] / s['supply'], lm4651.RAILS[1] / s['supply'] - 1):.3g} fits this supply")
     return checked_table(TABLE, s)
 
 

@@ -311,9 +311,21 @@ def binding(model: Model, eva: dict) -> Measure | None:
     Measure or None
         That quantity; None when none has a limit.
     """
-    limited = [(margin(m, float(eva[m.key].min()), float(eva[m.key].max())), i, m) for i, m in enumerate(model.measures)
-               if m.limit_low is not None or m.limit_high is not None]
+    limited = [(mg, i, m) for i, (m, mg) in enumerate(_limited(model, eva))]
     return min(limited)[2] if limited else None
+
+
+def _limited(model: Model, eva: dict) -> list[tuple[Measure, float]]:
+    """Every limited quantity with its worst-case margin (a fraction of its limit), in the model's order."""
+    return [(m, margin(m, float(eva[m.key].min()), float(eva[m.key].max()))) for m in model.measures
+            if m.limit_low is not None or m.limit_high is not None]
+
+
+def _group_variance(model: Model, eff: dict, key: str) -> dict:
+    """{tolerance group: its first-order variance of quantity ``key``} (``eff``: :func:`effects`), groups in the
+    model's order."""
+    groups = dict.fromkeys(src.group for src in model.sources)
+    return {g: sum(eff[src.name][key] ** 2 for src in model.sources if src.group == g) for g in groups}
 
 
 def per_limit(model: Model, eva: dict) -> list[tuple[str, float, str, float]]:
@@ -334,16 +346,12 @@ def per_limit(model: Model, eva: dict) -> list[tuple[str, float, str, float]]:
         quantity no tolerance moves has the group "" and share 0.
     """
     eff = effects(model)
-    groups = list(dict.fromkeys(src.group for src in model.sources))
     rows = []
-    for m in model.measures:
-        if m.limit_low is None and m.limit_high is None:
-            continue
-        var = {g: sum(eff[src.name][m.key] ** 2 for src in model.sources if src.group == g) for g in groups}
+    for m, mg in _limited(model, eva):
+        var = _group_variance(model, eff, m.key)
         total = sum(var.values())
-        top = max(groups, key=lambda g: var[g]) if total > 0 else ""
-        rows.append((m.key, margin(m, float(eva[m.key].min()), float(eva[m.key].max())), top,
-                     var[top] / total if total > 0 else 0.0))
+        top = max(var, key=var.get) if total > 0 else ""
+        rows.append((m.key, mg, top, var[top] / total if total > 0 else 0.0))
     return sorted(rows, key=lambda r: r[1])
 
 
@@ -366,12 +374,10 @@ def sensitivity(model: Model, eva: dict, draws: dict) -> list[tuple[str, float, 
         (group, share, margin_if_halved, yield_if_halved), ranked by share, largest first.
     """
     key = getattr(binding(model, eva), "key", model.measures[0].key)
-    eff = effects(model)
-    groups = list(dict.fromkeys(src.group for src in model.sources))
-    var = {g: sum(eff[src.name][key] ** 2 for src in model.sources if src.group == g) for g in groups}
+    var = _group_variance(model, effects(model), key)
     total = sum(var.values()) or 1.0
     rows = []
-    for g in groups:
+    for g in var:
         narrowed = tuple(halved(src) if src.group == g else src for src in model.sources)
         m_half = worst_margin(model, corners(model, narrowed))
         args = {src.name: (src.nominal + (draws[src.name] - src.nominal) / 2 if src.group == g else draws[src.name])

@@ -329,6 +329,7 @@ RDS_ON_MAX_25 = 0.300  # ohm: LM4652 table, R_DS(on) maximum at 25 C
 RDS_TC = (DEVICE["rds_on_hot"] / 0.200 - 1) / (100.0 - 25.0)  # 1/K: 200 mOhm typ at 25 C -> 230 at 100 C
 T_OVERMOD_MAX = 350e-9  # s: no maximum printed; the Example Design's own 350 ns (typical 310 ns)
 SUPPLY_TOTAL = (22.0, 44.0)  # V: operating ratings, V+ + V- (the rails +-11 V to +-22 V)
+RAILS = (SUPPLY_TOTAL[0] / 2, SUPPLY_TOTAL[1] / 2)  # V: the same as +-V_s, lowest and highest
 SUPPLY_ABS_MAX = 22.0  # V: absolute maximum ratings, supply voltage +-22 V (the operating range's top too)
 P_D_MAX_4652 = 32.0  # W: absolute maximum ratings, power dissipation (LM4652)
 I_D_SAT_MIN = 8.0  # A: LM4652 table, saturation drain current, minimum (10 A typical; V_GS 6 V, V_DS 10 V)
