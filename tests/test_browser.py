@@ -11,8 +11,6 @@ import re
 import shutil
 import subprocess
 import sys
-import tempfile
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 from urllib.parse import unquote
 
@@ -21,6 +19,7 @@ import yaml
 from bs4 import BeautifulSoup
 from build_pdf import chromium as chromium_path
 from build_pdf import offline_config
+from cdp import Browser
 
 ROOT = Path(__file__).resolve().parents[1]
 HTML = ROOT / "_build" / "html"
@@ -28,8 +27,7 @@ CHROMIUM = chromium_path()
 pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="no Chromium on this machine: install Debian's "
                                 "'chromium' package (make test does so where apt-get runs as root)")
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync",
-         "--enable-logging=stderr", "--v=0"]
+         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
 
 
 def toc_files():
@@ -38,12 +36,6 @@ def toc_files():
     for part in toc.get("parts", []):
         files += [c["file"] for c in part["chapters"]]
     return files
-
-
-def chromium(*args):
-    with tempfile.TemporaryDirectory() as profile:
-        return subprocess.run([CHROMIUM, *FLAGS, f"--user-data-dir={profile}", *args],
-                              capture_output=True, text=True, timeout=180)
 
 
 @pytest.fixture(scope="module")
@@ -61,25 +53,17 @@ def site(tmp_path_factory):
 
 
 def _console_errors(console):
-    messages = [line.split("CONSOLE", 1)[1] for line in console]
-    return [m[:200] for m in messages if re.search(r"Uncaught|Error|Failed|error", m)]
-
-
-def _complete(soup, console):
-    """Typeset and quiet: the page finished loading inside the virtual-time budget."""
-    return soup.find("h1") and all(el.find("mjx-container") for el in soup.select(".math")) and not _console_errors(console)
+    """The console's messages that report a failure: an uncaught exception, a resource that failed to load, an
+    error a script wrote (by its text: the theme writes a harmless "invalid theme mode" at level error)."""
+    return [f"{level}: {text}"[:200] for level, text in console if re.search(r"Uncaught|Error|Failed|error", text)]
 
 
 #: the layout rule, run in the page (tests/layout_probe.js): what sticks out of the text column, as JSON
 PROBE = Path(__file__).with_name("layout_probe.js").read_text()
-#: a phone's screen: headless Chromium keeps a window at least 500 px wide, so the page is measured in a frame
-#: 390 px wide, whose window the page's media queries see
+#: a phone's screen: the page's window is set this wide (the page's media queries see it)
 NARROW = 390
-#: the window a page is loaded in when it is measured narrower than that (in a frame); wider ones get their own
-WINDOW_MIN = 800
-FRAME = ('<!DOCTYPE html><html><body style="margin:0"><iframe src="{src}" style="width:{width}px;height:900px;border:0">'
-         '</iframe><script>window.addEventListener("message", e => {{ const p = document.createElement("pre"); '
-         'p.id = "layout-probe"; p.textContent = e.data; document.body.appendChild(p); }});</script></body></html>')
+#: a page is complete when the probe has written its report: MathJax has typeset it and the layout is measured
+READY = "document.getElementById('layout-probe')"
 
 
 def _layout(soup):
@@ -88,55 +72,48 @@ def _layout(soup):
     return json.loads(found[-1]) if found else None
 
 
-def _with_probe(page: Path, width: int):
-    """The page as loaded for measuring: a copy beside it (its links and styles resolve the same) with the probe
-    at the end of its body, framed at ``width`` when narrower than a window can be. Returns (url, files made)."""
+@pytest.fixture(scope="module")
+def browser():
+    """One Chromium for every page load of this file (tests/cdp.py): starting one costs as much as a chapter's
+    load, and the check loads every page twice."""
+    with Browser(CHROMIUM, FLAGS) as b:
+        yield b
+
+
+def _load(browser, page: Path, width: int):
+    """The console's lines of the page loaded in a window ``width`` px wide, once typeset and measured (``browser``
+    then holds it): it is loaded as a copy beside itself (its links and styles resolve the same) with the layout
+    probe at the end of its body."""
     copy = page.with_name(f"{page.stem}.probe-{width}.html")
     copy.write_text(page.read_text().replace("</body>", f"<script>{PROBE}</script></body>", 1))
-    if width >= WINDOW_MIN:
-        return copy.as_uri(), [copy]
-    frame = page.with_name(f"{page.stem}.frame-{width}.html")
-    frame.write_text(FRAME.format(src=copy.name, width=width))
-    return frame.as_uri(), [copy, frame]
-
-
-def _load(page: Path, width: int):
-    """(DOM, console lines) of the page at ``width``, loaded until typeset or the longer budget is spent."""
-    url, made = _with_probe(page, width)
     try:
-        for budget in ("20000", "60000"):  # a busy machine can starve one load: a second, longer try before judging
-            r = chromium("--dump-dom", f"--virtual-time-budget={budget}", f"--window-size={max(width, WINDOW_MIN)},1000", url)
-            console = [l for l in r.stderr.splitlines() if ":CONSOLE" in l]
-            soup = BeautifulSoup(r.stdout, "html.parser")
-            if width < WINDOW_MIN or _complete(soup, console):
-                break
+        return browser.load(copy.as_uri(), width, ready=READY)
     finally:
-        for f in made:
-            f.unlink(missing_ok=True)
-    return soup, console
+        copy.unlink(missing_ok=True)
 
 
 @pytest.fixture(scope="module")
-def rendered(site):
+def rendered(site, browser):
     """Every page of the table of contents as Chromium left it in a 1400 px window: the page's file, its DOM parsed
     once (html.parser takes about a second on a long chapter, so the tests share one parse), the console's lines
     and the layout probe's report."""
-    def one(doc):
+    out = {}
+    for doc in toc_files():
         page = site / f"{doc}.html"
-        soup, console = _load(page, 1400)
-        return doc, (page, soup, console, _layout(soup))
-    with ThreadPoolExecutor(2) as pool:
-        return dict(pool.map(one, toc_files()))
+        console = _load(browser, page, 1400)
+        soup = BeautifulSoup(browser.dom(), "html.parser")
+        out[doc] = (page, soup, console, _layout(soup))
+    return out
 
 
 @pytest.fixture(scope="module")
-def narrow(site):
-    """doc -> the layout probe's report of the page in a frame as wide as a phone's screen."""
-    def one(doc):
-        soup, _ = _load(site / f"{doc}.html", NARROW)
-        return doc, _layout(soup)
-    with ThreadPoolExecutor(2) as pool:
-        return dict(pool.map(one, toc_files()))
+def narrow(site, browser):
+    """doc -> the layout probe's report of the page in a window as wide as a phone's screen."""
+    out = {}
+    for doc in toc_files():
+        _load(browser, site / f"{doc}.html", NARROW)
+        out[doc] = json.loads(browser.evaluate(f"{READY}.textContent"))
+    return out
 
 
 @pytest.fixture(scope="module")
@@ -250,14 +227,18 @@ def test_browser_console_has_no_errors(rendered):
     assert not {d: v for d, v in bad.items() if v}
 
 
-def test_screenshot_of_a_chapter_is_kept(site):
+#: the page has been typeset (a page without MathJax at once)
+TYPESET = "!(window.MathJax && MathJax.startup && MathJax.startup.promise) || MathJax.startup.promise.then(() => true)"
+
+
+def test_screenshot_of_a_chapter_is_kept(site, browser):
     art = ROOT / "_build" / "artifacts"
     art.mkdir(parents=True, exist_ok=True)
     shot = art / "opamp_limiter.png"
     shot.unlink(missing_ok=True)
-    chromium("--window-size=1280,2400", "--virtual-time-budget=20000", f"--screenshot={shot}",
-             (site / "book/an94002/opamp_limiter.html").as_uri())
-    assert shot.exists() and shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
+    browser.load((site / "book/an94002/opamp_limiter.html").as_uri(), 1280, 2400, ready=TYPESET)
+    shot.write_bytes(browser.screenshot())
+    assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and shot.stat().st_size > 50_000
 
 
 def _sticking_out(report) -> list[str]:
@@ -274,3 +255,13 @@ def test_every_block_fits_the_column_at_1400_px_and_on_a_phone(rendered, narrow)
             assert report is not None, f"{doc} at {width} px: the layout probe did not run"
             assert report["width"] <= width and report["column"] <= width + 1, f"{doc} at {width} px: {report}"
             assert not report["wide"], f"{doc} at {width} px: " + "; ".join(_sticking_out(report))
+
+
+def test_the_console_check_sees_an_exception_and_a_missing_file(browser, tmp_path):
+    """The console check can fail: a page whose script throws and whose image is missing is reported twice."""
+    page = tmp_path / "broken.html"
+    page.write_text('<!DOCTYPE html><html><body><h1>x</h1><img src="missing.png">'
+                    '<script>null.f();</script></body></html>')
+    console = browser.load(page.as_uri(), 800, ready="document.readyState === 'complete'")
+    errors = _console_errors(console)
+    assert len(errors) == 2 and any("Uncaught TypeError" in e for e in errors) and any("missing.png" in e for e in errors)
