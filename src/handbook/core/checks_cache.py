@@ -1,18 +1,22 @@
-"""The equations' checks stored on disk, keyed on the code that defines them.
+"""The equations and their checks stored on disk, keyed on the code that defines them.
 
-Building a source's equations and simplifying every printed-minus-derived difference takes seconds;
-the command line should answer in well under one. The summaries are stored as JSON under
-``$HANDBOOK_CACHE`` (default ``~/.cache/handbook``), in a file named by a hash of the source files
-that define the equations, of the checking code itself and of the sympy version: any edit to them
-makes a new key, so a stale check is never read. Where the cache cannot be written, the checks are
-simply computed.
+Building a source's equations (each derivation solved by sympy) and simplifying every printed-minus-derived
+difference takes seconds, in every process that shows one: a chapter's kernel, a design report. Both are
+stored under ``$HANDBOOK_CACHE`` (default ``~/.cache/handbook``), in files named by a hash of the source files
+that define the equations, of the checking code itself and of the sympy version: any edit to them makes a
+new key, so a stale derivation or check is never read. The summaries (what the command line prints) are JSON;
+the records themselves, with their checks done, a pickle, written only when reading it back gives every
+summary unchanged. Where the cache cannot be written or read, everything is simply computed.
 """
 from __future__ import annotations
 
 import hashlib
+import importlib
 import importlib.util
+import io
 import json
 import os
+import pickle
 from pathlib import Path
 
 
@@ -80,11 +84,68 @@ def cached_summaries(source) -> list[dict]:
     except (OSError, ValueError):
         pass
     rows = [e.summary() for e in source.equations()]
+    _store(path, json.dumps(rows).encode())
+    return rows
+
+
+class _Pickler(pickle.Pickler):
+    """Unit quantities by reference (``sympy.physics.units.ohm`` itself): pickled by value, sympy drops the LaTeX
+    form a quantity was made with (Ω would read back as "ohm")."""
+
+    def reducer_override(self, obj):
+        from sympy.physics import units
+        from sympy.physics.units.quantities import Quantity
+
+        if isinstance(obj, Quantity) and getattr(units, str(obj.name), None) is obj:
+            return _unit, (str(obj.name),)
+        return NotImplemented
+
+
+def _unit(name: str):
+    """The quantity ``sympy.physics.units.<name>`` (what :class:`_Pickler` stores a unit as)."""
+    from sympy.physics import units
+
+    return getattr(units, name)
+
+
+def _store(path: Path, data: bytes) -> None:
+    """``data`` written to ``path`` whole or not at all (another process may be writing the same file)."""
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         tmp = path.with_suffix(f".{os.getpid()}.tmp")
-        tmp.write_text(json.dumps(rows))
+        tmp.write_bytes(data)
         os.replace(tmp, path)
     except OSError:
         pass
-    return rows
+
+
+def cached_equations(source) -> tuple:
+    """A source's equation records, their checks done: read from the cache, or built (its equations module's
+    ``build()``), checked and stored there.
+
+    Parameters
+    ----------
+    source : Source
+        The source document (its ``name`` and ``equations_module`` are read).
+
+    Returns
+    -------
+    tuple of Equation
+        The records in the module's order.
+    """
+    path = cache_dir() / f"records-{source.name.replace('/', '_')}-{key(source)}.pickle"
+    try:
+        return pickle.loads(path.read_bytes())
+    except Exception:  # noqa: BLE001 (no file, or one another version wrote: built again)
+        pass
+    records = tuple(importlib.import_module(source.equations_module).build())
+    summaries = [e.summary() for e in records]  # the checks, done once here and stored with the records
+    buffer = io.BytesIO()
+    try:
+        _Pickler(buffer, protocol=pickle.HIGHEST_PROTOCOL).dump(records)
+        same = [e.summary() for e in pickle.loads(buffer.getvalue())] == summaries  # read back, nothing lost
+    except (pickle.PicklingError, TypeError, AttributeError):  # a record holds what cannot be stored
+        same = False
+    if same:
+        _store(path, buffer.getvalue())
+    return records

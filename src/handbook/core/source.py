@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import difflib
 import functools
-import importlib
 import math
 import numbers
 from collections.abc import Callable, Mapping
@@ -248,4 +247,6 @@ def _claims(source: Source) -> tuple:
 def _equations(source: Source) -> tuple:
     if not source.equations_module:
         return ()
-    return tuple(importlib.import_module(source.equations_module).build())
+    from .checks_cache import cached_equations
+
+    return cached_equations(source)

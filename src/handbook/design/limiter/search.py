@@ -62,6 +62,12 @@ class Split:
         self.i9, self.i10 = np.unravel_index(order, (len(r["r9"]), len(r["r10"])))
         self.r9, self.r10, self.r11 = r["r9"], r["r10"], r["r11"]
         self.rho = (1 - t) / (1 + t)
+        # at each zener end j and corner c of each level shift: A_c / V_z,j and A_c -+ (V_os + eps_c) / V_z,j, so that
+        # ((V_z,j - L) A_c -+ (V_os + eps_c)) / V_z,j is one product and one difference (:meth:`interval`); shape
+        # (kind, j and c, level shift), so that the reduction over the eight (j, c) runs along whole rows
+        a8 = np.concatenate([self.a.T, self.a.T])
+        k8 = np.concatenate([(s["offset"] + self.eps.T) / vz for vz in self.vz])
+        self.terms = np.stack([np.concatenate([self.a.T / vz for vz in self.vz]), a8 - k8, a8 + k8])
         self.head_sum = self._head_sums(t, ib + ios / 2)
         self.y_lo, self.y_hi = self._reach()
 
@@ -117,14 +123,10 @@ class Split:
         theta = np.asarray(theta) - 1e-12  # the margin a design accepts (verify's tolerance)
         big_l = (1 + theta) * s["i_no_trip"] * r7 * (1 + s["r7_tolerance"])
         big_u = (1 - theta) * s["i_must_trip"] * (r7 if r7_high is None else r7_high) * (1 - s["r7_tolerance"])
-        a, eps = self.a[p], self.eps[p]
-        big_l, big_u = np.asarray(big_l), np.asarray(big_u)
-        if big_l.ndim:  # one theta per level shift
-            big_l, big_u = big_l[:, None], big_u[:, None]
-        vz = self.vz[:, None, None]  # positive wherever a level shift passed the headroom (Split.__init__)
+        per_a, low, high = self.terms[:, :, p]  # V_z positive wherever a level shift passed the headroom
         with np.errstate(divide="ignore", invalid="ignore"):
-            beta_low = (((vz - big_l) * a - s["offset"] - eps) / vz).min(axis=(0, 2))
-            beta_high = (((vz - big_u) * a + s["offset"] + eps) / vz).max(axis=(0, 2))
+            beta_low = (low - big_l * per_a).min(axis=0)  # ((V_z - L) A - V_os - eps) / V_z, least
+            beta_high = (high - big_u * per_a).max(axis=0)  # ((V_z - U) A + V_os + eps) / V_z, most
             y1 = np.where(beta_low > 0, (1 / beta_low - 1) / self.rho, np.inf)
             y2 = np.where(beta_high > 0, (1 / beta_high - 1) * self.rho, np.inf)
         # both ends widened by SLACK after clipping: y_hi R11 may round below the sum it came from

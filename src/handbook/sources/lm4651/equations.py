@@ -1,6 +1,7 @@
 """LM4651/LM4652 equations (3 to 12, and those the text implies): each function returns one record."""
 from __future__ import annotations
 
+import functools
 import math
 
 import sympy as sp
@@ -192,6 +193,11 @@ def _pd_system(x, p_out, f_sw):
     return x * p_out / (1 - x) + p_out / 4 * 2 * 0.230 + 1.0
 
 
+def _decibel(g):
+    """A voltage gain in dB."""
+    return 20 * math.log10(g)
+
+
 def eq9() -> Equation:
     """Eq 9: the switching loss fraction, (t_r + t_f + T_OVERMOD) f_SW.
 
@@ -211,10 +217,10 @@ def eq9() -> Equation:
                   "for losses the datasheet does not name (gate drive, ripple current, the idle loss)",
         table=(_pt("system table, P_d at 125 W, 125 kHz (typical 310 ns)", r"f_{SW} = 125\,\mathrm{kHz}",
                    {tr: 25e-9, tf: 26e-9, tom: 310e-9, f: 125e3}, "22", "W",
-                   through=lambda v: _pd_system(v, 125.0, 125e3)),
+                   through=functools.partial(_pd_system, p_out=125.0, f_sw=125e3)),
                _pt("system table, P_d at 135 W, 75 kHz (typical 310 ns)", r"f_{SW} = 75\,\mathrm{kHz}",
                    {tr: 25e-9, tf: 26e-9, tom: 310e-9, f: 75e3}, "22", "W",
-                   through=lambda v: _pd_system(v, 135.0, 75e3))),
+                   through=functools.partial(_pd_system, p_out=135.0, f_sw=75e3))),
         note="A switching-loss estimate from the edges alone, V I (t_r + t_f) f with 40 V, 5.59 A and the LM4652 "
              "table's 25 + 26 ns at 125 kHz, is 1.4 W against eq 9 and 10's 6.6 W.")
 
@@ -278,7 +284,7 @@ def eq12() -> Equation:
                   "Example's own R2 = 0.7 R1 follows from eq 12 and checks nothing)",
         table=(_pt("system table, THD+N condition 'A_V = 18 dB' (figure 1: R1 = 4.7 k, R2 = 3.5 k)",
                    r"R_1 = 4.7" + _KOHM + r",\ R_2 = 3.5" + _KOHM, {R1: 4.7e3, R2: 3.5e3, Rf11: 620e3, Rf12: 62e3},
-                   "18", "1", through=lambda g: 20 * math.log10(g)),
+                   "18", "1", through=_decibel),
                _pt("Example Design: 'R1 ... 4.7k and R2 ... 3.5k for a gain 7.5V/V'",
                    r"R_1 = 4.7" + _KOHM + r",\ R_2 = 3.5" + _KOHM, {R1: 4.7e3, R2: 3.5e3, Rf11: 620e3, Rf12: 62e3},
                    "7.5", "1")),
