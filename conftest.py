@@ -2,8 +2,10 @@
 scheduler below sends every test on its own, except what must stay together on one worker:
 
 * a notebook's cells (nbval runs them in order in one kernel): one unit per notebook;
-* a test file (or folder) whose fixture is expensive (the browser check builds the book once, the
-  converter tests import PyOpenMagnetics once): one unit, so the fixture is built once.
+* a test file (or folder) whose fixture is expensive (the converter tests import PyOpenMagnetics once): one
+  unit, so the fixture is built once;
+* the browser check and the PDF: one unit, the browser check first (its HTML build leaves Sphinx's environment,
+  which the PDF's single-page build then reads instead of every chapter again).
 
 The longest units go out first, so that neither worker is left with a long one at the end.
 (xdist's own ``--dist loadgroup`` marks do not take under pytest 9.2, whose node ids moved from
@@ -12,19 +14,24 @@ The longest units go out first, so that neither worker is left with a long one a
 import pytest
 
 #: test files kept on one worker because their module-scoped fixture is expensive to build twice
-TOGETHER = ("tests/test_browser.py", "tests/test_pdf.py", "tests/design/converter/", "tests/report/test_plots.py",
+TOGETHER = ("tests/test_browser.py", "tests/design/converter/", "tests/report/test_plots.py",
             "tests/design/limiter/test_limiter_exact_wide.py",  # its last test counts what the others found
             "tests/report/test_design_report.py")  # its reports (template, [class_d]) are built once
 #: units sent first, longest first (measured on the 2-core machine); the rest follow in collection order
-FIRST = ("tests/test_browser.py", "tests/test_pdf.py", "tests/design/limiter/test_limiter_exact_wide.py",
+FIRST = ("tests/test_browser.py", "tests/design/limiter/test_limiter_exact_wide.py",
          "tests/report/test_design_report.py",
          "tests/design/limiter/test_limiter_search.py::test_the_search",
          "tests/design/converter/", "tests/design/limiter/test_limiter_search.py::test_every_design",
          "tests/design/test_fuzz_specs.py")
 
 
+#: test files that are one unit with another (file -> the unit)
+WITH = {"tests/test_pdf.py": "tests/test_browser.py"}
+
+
 def _unit(nodeid: str) -> str:
     path = nodeid.split("::", 1)[0]
+    path = WITH.get(path, path)
     if path.endswith(".ipynb"):
         return path
     return next((unit for unit in TOGETHER if path.startswith(unit)), nodeid)
