@@ -31,6 +31,7 @@ resistors take all their combinations. No direction of any resistor is assumed: 
 """
 from __future__ import annotations
 
+import functools
 import itertools
 from collections.abc import Mapping
 
@@ -315,10 +316,10 @@ def verify(r7, r, s: dict) -> dict:
 
 
 def corner_proof() -> dict:
-    """sympy: {(expression, quantity): (degree of the numerator, of the denominator, denominator a sum of
-    positive terms)} for V_cs, the trip current and both headrooms. All degrees at most 1 and positive
-    denominators: each is monotone in each quantity over
-    the tolerance box, so the extremes lie at its vertices (the module's docstring).
+    """sympy, once per process: {(expression, quantity): (degree of the numerator, of the denominator, denominator a
+    sum of positive terms)} for V_cs, the trip current and both headrooms. All degrees at most 1 and positive
+    denominators: each is monotone in each quantity over the tolerance box, so the extremes lie at its vertices
+    (the module's docstring).
 
     Returns
     -------
@@ -328,6 +329,11 @@ def corner_proof() -> dict:
         the degree in that quantity of the expression's numerator and of its denominator, and whether the
         denominator's coefficients (as a polynomial in R7, R9 .. R13) are all positive.
     """
+    return dict(_corner_proof())
+
+
+@functools.cache
+def _corner_proof() -> dict:
     import sympy as sp
 
     r7, r9, r10, r11, r12, r13 = sp.symbols("R7 R9 R10 R11 R12 R13", positive=True)
