@@ -1,7 +1,7 @@
 """`python -m handbook report SPEC.toml -o F.html|F.pdf`: one self-contained file per spec (the template, the book's
 examples, a partial spec), its numbers the same as `design --json`'s, bad specs refused as `design` refuses them
 with nothing written; the worst-case section against a stand-in of handbook.design.worstcase's interface; the page
-in headless Chromium (one launch) and the PDF read back with pypdf."""
+in headless Chromium (one launch) and the PDF read back with PDFium (pypdfium2)."""
 import json
 import re
 import subprocess
@@ -258,7 +258,7 @@ def test_the_page_in_chromium(class_d_page, tmp_path):
 
 @pytest.mark.skipif(CHROMIUM is None, reason="no Chromium on this machine: install Debian's 'chromium' package")
 def test_the_pdf_has_version_and_hash_on_every_page(tmp_path):
-    from pypdf import PdfReader
+    import pypdfium2 as pdfium
 
     spec = tmp_path / "amp.toml"
     spec.write_text((ROOT / "book" / "examples" / "amplifier_8ohm.toml").read_text())
@@ -267,7 +267,9 @@ def test_the_pdf_has_version_and_hash_on_every_page(tmp_path):
     assert run.returncode == 0, run.stderr[-2000:]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["amp.pdf", "amp.toml"]
     sha = json.loads(_handbook("design", spec, "--json").stdout)["spec_sha256"]
-    pages = [" ".join(p.extract_text().split()) for p in PdfReader(pdf).pages]
+    doc = pdfium.PdfDocument(pdf)
+    pages = [" ".join(p.get_textpage().get_text_range().split()) for p in doc]
+    doc.close()
     assert 2 <= len(pages) <= 40
     for k, text in enumerate(pages, 1):
         assert sha in text.replace(" ", "") and "handbook 0.1.0" in text, f"page {k}: no trace in its footer"
