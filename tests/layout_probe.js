@@ -1,8 +1,8 @@
 // The layout rule of the browser check (tests/test_browser.py), run inside the page once MathJax has typeset it:
 // every visible block of the text column either fits inside the column or sits inside a scroll box (overflow-x
 // auto or scroll) that itself fits. A cell tagged full-width may use the page's main area instead of the column.
-// Writes what breaks the rule, as JSON, into a new pre element (id layout-probe), and posts it to the parent
-// window when the page is measured inside a frame (a frame 390 px wide stands for a phone's screen).
+// Writes what breaks the rule, as JSON, into a new pre element (id layout-probe); the check reads it from the page
+// (a phone's screen is a window 390 px wide).
 (function () {
   function measure() {
     const col = document.querySelector("article.bd-article") || document.querySelector("main");
@@ -36,7 +36,6 @@
     }
     report.textContent = JSON.stringify({width: page, column: col ? Math.round(edge(col)) : null, wide: wide});
     document.body.appendChild(report);
-    if (window.parent !== window) window.parent.postMessage(report.textContent, "*");
   }
   window.addEventListener("load", function () {
     if (window.MathJax && MathJax.startup && MathJax.startup.promise) MathJax.startup.promise.then(() => setTimeout(measure, 100));
