@@ -8,6 +8,8 @@ in it. Nothing but the standard library: no browser is downloaded and no client 
 from __future__ import annotations
 
 import base64
+import contextlib
+import fcntl
 import json
 import os
 import select
@@ -35,21 +37,36 @@ class Browser:
         self._profile = tempfile.TemporaryDirectory()
         to_browser, self._out = os.pipe()
         self._in, from_browser = os.pipe()
-
-        def pipes():  # in the child, before exec: the ends it reads and writes on fds 3 and 4
-            os.dup2(to_browser, 100)  # first out of the way: either end may itself be fd 3 or 4
-            os.dup2(from_browser, 101)
-            os.dup2(100, 3)
-            os.dup2(101, 4)
-
-        self.proc = subprocess.Popen([binary, *flags, "--remote-debugging-pipe", f"--user-data-dir={self._profile.name}"],
-                                     stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                                     pass_fds=(3, 4), preexec_fn=pipes)
+        # the child's ends above fd 4 first (either could itself be 3 or 4), then moved to 3 and 4 by the bash that
+        # execs Chromium (no preexec_fn: the test workers have threads; dash takes one-digit fds only)
+        ends = [fcntl.fcntl(fd, fcntl.F_DUPFD_CLOEXEC, 5) for fd in (to_browser, from_browser)]
         os.close(to_browser)
         os.close(from_browser)
-        self._buffer, self._next, self.events = b"", 0, []
-        target = self.send("Target.createTarget", url="about:blank")["targetId"]
-        self.session = self.send("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
+        r, w = ends
+        self.proc, self.session, self._buffer, self._next, self.events = None, None, b"", 0, []
+        try:
+            self.proc = subprocess.Popen(
+                ["/bin/bash", "-c", f'exec "$@" 3<&{r} 4>&{w} {r}<&- {w}>&-', "bash", binary, *flags,
+                 "--remote-debugging-pipe", f"--user-data-dir={self._profile.name}"],
+                stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, pass_fds=ends)
+            while ends:  # the child has its own copies now
+                os.close(ends.pop())
+            self.send("Browser.getVersion", timeout=30)  # it answers: it has started
+        except BaseException:  # a browser that did not start is not left running
+            while ends:
+                os.close(ends.pop())
+            self.close()
+            raise
+
+    def _new_tab(self) -> None:
+        """A fresh tab for the next page (the last one closed): nothing of one page, its events or its virtual
+        time, carries over to the next."""
+        if self.session is not None:
+            old, self.session = self.session, None
+            self.send("Target.closeTarget", targetId=self._target)
+            self.events = [e for e in self.events if e.get("sessionId") != old]
+        self._target = self.send("Target.createTarget", url="about:blank")["targetId"]
+        self.session = self.send("Target.attachToTarget", targetId=self._target, flatten=True)["sessionId"]
         for domain in ("Page", "Runtime", "Log"):
             self.send(f"{domain}.enable", session=self.session)
 
@@ -139,9 +156,12 @@ class Browser:
             raise BrowserError(f"{expression[:60]}: {out['exceptionDetails'].get('text')}")
         return out["result"].get("value")
 
-    def load(self, url: str, width: int, height: int = 1000, ready: str = "true", timeout: float = 120):
-        """Load ``url`` in a window ``width`` px wide and wait until the expression ``ready`` is true; returns the
-        console's messages of this load (:meth:`dom` gives the page as it then stands).
+    def load(self, url: str, width: int, height: int = 1000, ready: str = "true", timeout: float = 120,
+             settle_ms: int = 20_000):
+        """Load ``url`` in a new tab ``width`` px wide, wait until the expression ``ready`` is true, then let the
+        page run ``settle_ms`` more of virtual time (its pending timers fire at once, as ``--virtual-time-budget``
+        lets them: a script that fails a few seconds after the load is still heard); returns the console's
+        messages of this load (:meth:`dom` gives the page as it then stands).
 
         Parameters
         ----------
@@ -153,13 +173,15 @@ class Browser:
             A JavaScript expression (or promise) true once the page is complete, tried every 100 ms.
         timeout : float
             Seconds for the page to load and become ready.
+        settle_ms : int
+            Virtual milliseconds the page runs on after it is ready, before its console is read.
 
         Returns
         -------
         list of tuple
             Each console message, failed resource and uncaught exception of the load, as (level, text).
         """
-        self.events = [e for e in self.events if e.get("sessionId") != self.session]
+        self._new_tab()
         self.send("Emulation.setDeviceMetricsOverride", session=self.session, width=width, height=height,
                   deviceScaleFactor=1, mobile=False)
         self.send("Page.navigate", session=self.session, url=url)
@@ -169,6 +191,9 @@ class Browser:
                 f"() => setTimeout(go, 100)); go(); }})")
         if not self.evaluate(poll, timeout + 10):
             raise BrowserError(f"{url}: not ready after {timeout} s ({ready})")
+        if settle_ms:
+            self.send("Emulation.setVirtualTimePolicy", session=self.session, policy="advance", budget=settle_ms)
+            self.wait_for("Emulation.virtualTimeBudgetExpired", timeout)
         return self.console()
 
     def dom(self) -> str:
@@ -216,16 +241,20 @@ class Browser:
 
     def close(self) -> None:
         """Close the browser (and its pipes and profile)."""
-        try:
-            self.send("Browser.close", timeout=10)
-        except (BrowserError, OSError):
-            pass
-        try:
-            self.proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            self.proc.kill()
+        if self.proc is not None:
+            try:
+                self.send("Browser.close", timeout=10)
+            except (BrowserError, OSError, AttributeError):
+                pass
+            try:
+                self.proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+            self.proc = None
         for fd in (self._in, self._out):
-            os.close(fd)
+            with contextlib.suppress(OSError):
+                os.close(fd)
         self._profile.cleanup()
 
     def __enter__(self):

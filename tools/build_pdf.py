@@ -58,11 +58,12 @@ def offline_config(folder: Path) -> Path:
 def build_html(work: Path) -> Path:
     """The single-page HTML of the whole book (execution off) in _build/singlehtml, its configuration written in
     ``work``; the page to print. Sphinx's environment (_build/.doctrees) is the one the browser check's HTML build
-    of the same configuration leaves (nitpicky too), so after it nothing is read again."""
+    of the same configuration leaves (nitpicky too), so after it nothing is read again; a warning fails it, as it
+    fails the book's build."""
     path = offline_config(work)
     jb = Path(sys.executable).with_name("jupyter-book")
-    out = subprocess.run([str(jb), "build", str(ROOT), "--builder", "singlehtml", "-n", "--config", str(path)],
-                         capture_output=True, text=True, timeout=900)  # -n as the HTML build: the same environment
+    out = subprocess.run([str(jb), "build", str(ROOT), "--builder", "singlehtml", "-W", "-n", "--keep-going", "--config",
+                          str(path)], capture_output=True, text=True, timeout=900)  # the book's own warning rules
     site = ROOT / "_build" / "singlehtml"
     redirect = re.search(r'url=([^"]+)"', (site / "index.html").read_text()) if (site / "index.html").exists() else None
     if out.returncode != 0 or redirect is None or not (site / redirect.group(1)).exists():

@@ -144,7 +144,7 @@ def cached_equations(source) -> tuple:
     try:
         _Pickler(buffer, protocol=pickle.HIGHEST_PROTOCOL).dump(records)
         same = [e.summary() for e in pickle.loads(buffer.getvalue())] == summaries  # read back, nothing lost
-    except (pickle.PicklingError, TypeError, AttributeError):  # a record holds what cannot be stored
+    except Exception:  # noqa: BLE001 (a record holds what cannot be stored: not stored, still returned)
         same = False
     if same:
         _store(path, buffer.getvalue())
