@@ -17,17 +17,18 @@ from urllib.parse import unquote
 import pytest
 import yaml
 from bs4 import BeautifulSoup
-from build_pdf import chromium as chromium_path
 from build_pdf import offline_config
 from cdp import Browser
+
+from handbook.report.chromium import OFFLINE
+from handbook.report.chromium import chromium as chromium_path
 
 ROOT = Path(__file__).resolve().parents[1]
 HTML = ROOT / "_build" / "html"
 CHROMIUM = chromium_path()
 pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="no Chromium on this machine: install Debian's "
                                 "'chromium' package (make test does so where apt-get runs as root)")
-FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+FLAGS = [*OFFLINE, "--disable-quic"]  # the design report's offline flags, QUIC off too
 
 
 def toc_files():

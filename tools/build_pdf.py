@@ -15,7 +15,7 @@ from pathlib import Path
 
 import yaml
 
-from handbook.report.chromium import chromium  # noqa: F401 (the browser check finds Chromium through this name)
+from handbook.report.chromium import chromium
 from handbook.report.chromium import print_pdf as print_pdf_with
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -64,6 +64,11 @@ def cache_dir() -> Path:
     return Path(os.environ.get("HANDBOOK_CACHE") or Path.home() / ".cache" / "handbook")
 
 
+def _path(source, kind: str, suffix: str) -> Path:
+    """The cache file of one kind ("equations": the summaries, "records": the records) for ``source``'s code now."""
+    return cache_dir() / f"{kind}-{source.name.replace('/', '_')}-{key(source)}{suffix}"
+
+
 def cached_summaries(source) -> list[dict]:
     """A source's equation summaries, read from the cache or computed and stored there.
 
@@ -78,7 +83,7 @@ def cached_summaries(source) -> list[dict]:
         One :meth:`~handbook.core.equation.Equation.summary` per equation, in the order of
         ``source.equations()``.
     """
-    path = cache_dir() / f"equations-{source.name.replace('/', '_')}-{key(source)}.json"
+    path = _path(source, "equations", ".json")
     try:
         return json.loads(path.read_text())
     except (OSError, ValueError):
@@ -133,7 +138,7 @@ def cached_equations(source) -> tuple:
     tuple of Equation
         The records in the module's order.
     """
-    path = cache_dir() / f"records-{source.name.replace('/', '_')}-{key(source)}.pickle"
+    path = _path(source, "records", ".pickle")
     try:
         return pickle.loads(path.read_bytes())
     except Exception:  # noqa: BLE001 (no file, or one another version wrote: built again)

@@ -54,8 +54,8 @@ class Split:
         self.r12, self.r13 = r12[keep], r13[keep]
         # the least S + R11 the references may have, per level shift: the divider current it leaves them
         self.least_total = self.vz[1] / ((1 - t) * (s["divider_current_max"] * (1 + 1e-12) - i_p[keep]))
-        self.a = (a13 / (a12 + a13))[keep]  # (nP, 4): A at each corner of (R12, R13)
-        self.eps = (a12 * a13 / (a12 + a13))[keep] * min(ios, ib + ios / 2)  # the least bias error there
+        a = (a13 / (a12 + a13))[keep]  # (nP, 4): A at each corner of (R12, R13)
+        eps = (a12 * a13 / (a12 + a13))[keep] * min(ios, ib + ios / 2)  # the least bias error there
         sums = (r["r9"][:, None] + r["r10"][None, :]).ravel()
         order = np.argsort(sums, kind="stable")
         self.sums = sums[order]
@@ -65,9 +65,9 @@ class Split:
         # at each zener end j and corner c of each level shift: A_c / V_z,j and A_c -+ (V_os + eps_c) / V_z,j, so that
         # ((V_z,j - L) A_c -+ (V_os + eps_c)) / V_z,j is one product and one difference (:meth:`interval`); shape
         # (kind, j and c, level shift), so that the reduction over the eight (j, c) runs along whole rows
-        a8 = np.concatenate([self.a.T, self.a.T])
-        k8 = np.concatenate([(s["offset"] + self.eps.T) / vz for vz in self.vz])
-        self.terms = np.stack([np.concatenate([self.a.T / vz for vz in self.vz]), a8 - k8, a8 + k8])
+        a8 = np.concatenate([a.T, a.T])
+        k8 = np.concatenate([(s["offset"] + eps.T) / vz for vz in self.vz])
+        self.terms = np.stack([np.concatenate([a.T / vz for vz in self.vz]), a8 - k8, a8 + k8])
         self.head_sum = self._head_sums(t, ib + ios / 2)
         self.y_lo, self.y_hi = self._reach()
 
