@@ -121,11 +121,12 @@ def rerun(chapter: str, tmp_path_factory) -> Path:
 
 def execute(chapter: str, params: dict, out: Path) -> Path:
     """The chapter executed with ``params`` into ``out`` (papermill), in this process's shared kernel, cleared
-    first; papermill's error when the chapter stops."""
+    first; papermill's error when the chapter stops. The notebook is written once, at the end: papermill's default
+    writes (and validates) the whole notebook at every cell's start and end, up to a second of a chapter's run."""
     km = _shared_kernel()
     _fresh(km, (BOOK / chapter).parent)
     pm.execute_notebook(str(BOOK / f"{chapter}.ipynb"), str(out), parameters=params, kernel_name="python3",
-                        progress_bar=False, km=km)
+                        progress_bar=False, km=km, request_save_on_cell_execute=False)
     return out
 
 

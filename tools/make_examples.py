@@ -25,7 +25,8 @@ def main():
     for toml in sorted((ROOT / "book" / "examples").glob("*.toml")):
         out = toml.with_suffix(".ipynb")
         pm.execute_notebook(str(SOURCE), str(out), parameters={"spec_file": toml.name}, kernel_name="python3",
-                            cwd=str(toml.parent), progress_bar=False, report_mode=False)
+                            cwd=str(toml.parent), progress_bar=False, report_mode=False,
+                            request_save_on_cell_execute=False)
         nb = nbformat.read(out, as_version=4)
         head, text = title_of(toml)
         nb.cells[0] = nbformat.v4.new_markdown_cell(

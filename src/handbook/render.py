@@ -234,7 +234,7 @@ def rerun(chapter: str, pairs: list[tuple[str, str]], out: str | Path | None = N
         nb = Path(tmp) / f"{path.stem}.ipynb"
         try:
             pm.execute_notebook(str(path), str(nb), parameters=given, kernel_name="python3", cwd=str(path.parent),
-                                progress_bar=False)
+                                progress_bar=False, request_save_on_cell_execute=False)
         except pm.PapermillExecutionError as exc:
             why = str(exc.evalue).splitlines()[0] if exc.evalue else exc.ename
             if exc.ename == "Infeasible":  # a valid spec nothing can meet: the design says what can be met
@@ -258,5 +258,5 @@ def render_spec(spec: str | Path, out: str | Path | None = None) -> Path:
         nb = Path(tmp) / f"{path.stem}.ipynb"
         pm.execute_notebook(str(root / "book" / "design" / "your_own.ipynb"), str(nb),
                             parameters={"spec_file": str(path)}, kernel_name="python3",
-                            cwd=str(root / "book" / "design"), progress_bar=False)
+                            cwd=str(root / "book" / "design"), progress_bar=False, request_save_on_cell_execute=False)
         return render(nb, target)

@@ -64,3 +64,33 @@ def test_a_part_without_a_stand_in_is_an_error(monkeypatch):
     monkeypatch.setattr(limiters, "opamp_parts", lambda p: original(p) + (Part("Q9", "BC547"),))
     with pytest.raises(ValueError, match="Q9"):
         lc.opamp_netlist()
+
+
+PROBE = """
+import sys
+from IPython.core.interactiveshell import InteractiveShell
+import sympy as sp
+ip = InteractiveShell.instance()
+shown = {"float": 1.5, "list": [1, 2], "expression": sp.Symbol("x") + 1}
+def kinds():
+    return {name: sorted(ip.display_formatter.format(v)[0]) for name, v in shown.items()}
+before = kinds()
+ip.run_cell(sys.argv[1])
+print(before == kinds(), kinds()["float"])
+"""
+
+
+@pytest.mark.parametrize("how, unchanged", [("import lcapy", False),
+                                            ("from handbook.spice import lcapy_checks; _ = lcapy_checks._lcapy()", True)])
+def test_lcapy_leaves_a_notebooks_display_as_it_was(how, unchanged):
+    """In a notebook's shell, importing lcapy makes every float shown or glued afterwards a LaTeX formula and a PNG
+    (sympy's init_printing, which lcapy calls); the checks' import puts the display back as it was, so a chapter's
+    outputs do not depend on whether an lcapy check ran before in the kernel."""
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-c", PROBE, how], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr[-2000:]
+    same, float_kinds = out.stdout.split(maxsplit=1)
+    assert same == str(unchanged), out.stdout
+    assert ("image/png" in float_kinds) is not unchanged

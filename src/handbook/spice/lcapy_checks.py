@@ -15,11 +15,46 @@ of a limiter a current the op-amp's output sets (a transconductance K > 0: the r
 so the loop holds V+ = V-; any K gives the same limit), or an independent current I_M where the loop is
 open; the speed loop's T1 a voltage source V_mot at its collector (the divider sees a source); the OTA's
 and the op-amp's inputs draw no current (the equations' law), so they are left out where the loop is open.
-lcapy takes about 2 s to import: it is imported inside the functions.
+lcapy takes about 2 s to import: it is imported inside the functions, by :func:`_lcapy`.
 """
 from __future__ import annotations
 
 import math
+import sys
+
+
+def _lcapy():
+    """lcapy, imported without its printing side effects. Importing lcapy calls sympy's ``init_printing``, which
+    in a notebook makes IPython render every float, int, list and dict shown or glued after it as LaTeX and as a
+    PNG (mathtext, about 50 ms each: a chapter's glued numbers cost seconds and carried images nobody reads), and
+    which outlives the chapter in a kernel that runs several: a chapter's outputs depended on whether an lcapy
+    check had run before it. IPython's display formatters, sympy's ``Printable`` display methods, sympy's global
+    printer settings and ``sys.displayhook`` are put back as they were."""
+    if "lcapy" in sys.modules:
+        return sys.modules["lcapy"]
+    from sympy.core._print_helpers import Printable
+    from sympy.printing.printer import Printer
+
+    shell = None
+    if "IPython" in sys.modules:
+        from IPython import get_ipython
+
+        shell = get_ipython()
+    formatters = shell.display_formatter.formatters.values() if shell is not None else ()
+    saved = [(f, dict(f.type_printers), dict(f.deferred_printers)) for f in formatters]
+    methods = {name: Printable.__dict__[name] for name in ("_repr_latex_", "_repr_png_", "_repr_svg_")}
+    settings, hook = dict(Printer._global_settings), sys.displayhook
+    try:
+        import lcapy
+    finally:
+        for f, types, deferred in saved:
+            f.type_printers, f.deferred_printers = types, deferred
+        for name, method in methods.items():
+            setattr(Printable, name, method)
+        Printer._global_settings.clear()
+        Printer._global_settings.update(settings)
+        sys.displayhook = hook
+    return lcapy
 
 
 def _nodes(spec: str, count: int, named: bool = False) -> list[str]:
@@ -99,7 +134,7 @@ def opamp_netlist(p: dict | None = None) -> str:
 def trip_from_netlist(p: dict | None = None):
     """V_cs held by the closed loop, derived by lcapy from :func:`opamp_netlist` with A -> oo (a sympy
     expression in the registry's symbols)."""
-    import lcapy
+    lcapy = _lcapy()
 
     from ..sources.an94002 import equations as eqs
 
@@ -153,7 +188,7 @@ def an93008_from_netlist() -> dict:
     from the limiter's parts, against the registry's derivations (an93008.equations eq1().derived with its
     V_cs set to lcapy's V_s - V(cs), eq6().derived). {"eq1": {...}, "eq6": {...}}, each with "lcapy",
     "registry", "same"."""
-    import lcapy
+    lcapy = _lcapy()
 
     from ..sources.an93008 import equations as eqs
 
@@ -187,7 +222,7 @@ def speed_netlist() -> str:
 def speed_from_netlist() -> dict:
     """AMPIN+ of the speed loop derived by lcapy from its parts, against the registry's derivation of eq 10
     (KCL at AMPIN+). {"lcapy", "registry", "printed", "same", "same_as_printed"}."""
-    import lcapy
+    lcapy = _lcapy()
 
     from ..sources.an94002 import equations as eqs
     from . import speed
@@ -219,7 +254,7 @@ def filter_from_netlist() -> dict:
     :func:`filter_netlist` with L1 = L2 = L, against the second-order form the class-D design uses: corner
     f_C = 1 / (2 pi sqrt(2 L C)) and Q = R sqrt(C / 2L) (:func:`handbook.sources.lm4651.circuit.filter_f0`,
     ``filter_q``, fed sympy symbols). {"lcapy", "registry", "same"}."""
-    import lcapy
+    lcapy = _lcapy()
     import sympy as sp
 
     from ..sources.lm4651 import circuit as lm4651
@@ -262,7 +297,7 @@ def timer_from_netlist() -> dict:
     """lcapy's v(t) of :func:`timer_netlist`, set equal to the swing dV after one commutation interval
     t_com = 1 / (6 n N), solved for C, against the registry's derivation of AN94002 eq 5 (charge balance).
     {"lcapy", "registry", "same"}."""
-    import lcapy
+    lcapy = _lcapy()
     import sympy as sp
 
     from ..sources.an94002 import equations as eqs
