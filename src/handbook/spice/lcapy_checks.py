@@ -19,6 +19,7 @@ lcapy takes about 2 s to import: it is imported inside the functions, by :func:`
 """
 from __future__ import annotations
 
+import functools
 import math
 import sys
 
@@ -98,16 +99,28 @@ def _to(expr, mapping: dict):
     return expr.subs({free[k]: v for k, v in mapping.items() if k in free})
 
 
+@functools.lru_cache(maxsize=64)
+def _circuit(text: str):
+    """lcapy's circuit of a netlist, one per netlist text in a process: lcapy keeps what it has solved in the
+    circuit, so a chapter re-run in the same kernel does not solve the same netlist again (a changed netlist is
+    a new circuit)."""
+    return _lcapy().Circuit(text)
+
+
+@functools.lru_cache(maxsize=256)
 def _same(a, b) -> bool:
     import sympy as sp
 
     return sp.simplify(a - b) == 0
 
 
-def _held(cct, top: str, bottom: str):
-    """V(top) - V(bottom) at DC with the op-amp's gain A -> oo."""
+@functools.lru_cache(maxsize=64)
+def _held(text: str, top: str, bottom: str):
+    """V(top) - V(bottom) at DC with the op-amp's gain A -> oo, of the circuit of netlist ``text`` (once per netlist
+    in a process, as :func:`_circuit`)."""
     import sympy as sp
 
+    cct = _circuit(text)
     v = (cct[top].V - cct[bottom].V).dc.expr
     return sp.limit(v, _names(v)["A"], sp.oo)
 
@@ -134,11 +147,9 @@ def opamp_netlist(p: dict | None = None) -> str:
 def trip_from_netlist(p: dict | None = None):
     """V_cs held by the closed loop, derived by lcapy from :func:`opamp_netlist` with A -> oo (a sympy
     expression in the registry's symbols)."""
-    lcapy = _lcapy()
-
     from ..sources.an94002 import equations as eqs
 
-    held = _held(lcapy.Circuit(opamp_netlist(p)), "vs", "cs")
+    held = _held(opamp_netlist(p), "vs", "cs")
     return _to(held, {"V_D1": eqs.V_D1, "V_s": eqs.V_s, "R9": eqs.R9, "R10": eqs.R10, "R11": eqs.R11,
                       "R12": eqs.R12, "R13": eqs.R13})
 
@@ -188,16 +199,15 @@ def an93008_from_netlist() -> dict:
     from the limiter's parts, against the registry's derivations (an93008.equations eq1().derived with its
     V_cs set to lcapy's V_s - V(cs), eq6().derived). {"eq1": {...}, "eq6": {...}}, each with "lcapy",
     "registry", "same"."""
-    lcapy = _lcapy()
 
     from ..sources.an93008 import equations as eqs
 
     names = {"V_s": eqs.Vs, "R8": eqs.R8, "R9": eqs.R9, "R10": eqs.R10, "R11": eqs.R11}
-    opened = lcapy.Circuit(supply_netlist(closed=False))
+    opened = _circuit(supply_netlist(closed=False))
     v_plus = _to(opened["inp"].V.dc.expr, names)
     v_cs = _to((opened["vs"].V - opened["cs"].V).dc.expr, names)
     eq1 = eqs.eq1().derived.subs(eqs.Vcs, v_cs)
-    held = _to(_held(lcapy.Circuit(supply_netlist(closed=True)), "vs", "cs"), names)
+    held = _to(_held(supply_netlist(closed=True), "vs", "cs"), names)
     eq6 = eqs.eq6().derived
     return {"eq1": {"lcapy": v_plus, "registry": eq1, "same": _same(v_plus, eq1)},
             "eq6": {"lcapy": held, "registry": eq6, "same": _same(held, eq6)}}
@@ -222,7 +232,6 @@ def speed_netlist() -> str:
 def speed_from_netlist() -> dict:
     """AMPIN+ of the speed loop derived by lcapy from its parts, against the registry's derivation of eq 10
     (KCL at AMPIN+). {"lcapy", "registry", "printed", "same", "same_as_printed"}."""
-    lcapy = _lcapy()
 
     from ..sources.an94002 import equations as eqs
     from . import speed
@@ -230,7 +239,7 @@ def speed_from_netlist() -> dict:
     e10 = eqs.eq10()
     names = {"R3": eqs.R3, "R4": eqs.R4, "V_mot": eqs.V_mot}
     ampin = _nodes(speed.NODES["R4"], 1, named=True)[0]  # AMPIN+: R4's top
-    node = _to(lcapy.Circuit(speed_netlist())[ampin].V.dc.expr, names)
+    node = _to(_circuit(speed_netlist())[ampin].V.dc.expr, names)
     return {"lcapy": node, "registry": e10.derived, "printed": e10.printed, "same": _same(node, e10.derived),
             "same_as_printed": _same(node, e10.printed)}
 
@@ -254,7 +263,6 @@ def filter_from_netlist() -> dict:
     :func:`filter_netlist` with L1 = L2 = L, against the second-order form the class-D design uses: corner
     f_C = 1 / (2 pi sqrt(2 L C)) and Q = R sqrt(C / 2L) (:func:`handbook.sources.lm4651.circuit.filter_f0`,
     ``filter_q``, fed sympy symbols). {"lcapy", "registry", "same"}."""
-    lcapy = _lcapy()
     import sympy as sp
 
     from ..sources.lm4651 import circuit as lm4651
@@ -262,7 +270,7 @@ def filter_from_netlist() -> dict:
 
     o1, o2 = class_d.NODES["VO1"].split()
     outp, outn = class_d.NODES["R_L"].split()
-    h = lcapy.Circuit(filter_netlist()).transfer(o1, o2, outp, outn).expr
+    h = _circuit(filter_netlist()).transfer(o1, o2, outp, outn).expr
     free = _names(h)
     l_, c_, r_ = sp.symbols("L C R", positive=True)
     h = h.subs({free["L1"]: l_, free["L2"]: l_, free["C_BYP"]: c_, free["R_L"]: r_})
@@ -304,7 +312,7 @@ def timer_from_netlist() -> dict:
     from . import timers
 
     pin = _nodes(timers.CD_NODES["C3"], 1, named=True)[0]
-    v = lcapy.Circuit(timer_netlist())[pin].V(lcapy.t).expr
+    v = _circuit(timer_netlist())[pin].V(lcapy.t).expr
     free = _names(v)
     at = v.subs(sp.Heaviside(free["t"]), 1).subs({free["t"]: 1 / (6 * eqs.n * eqs.N), free["I_CH"]: eqs.I})
     c_needed = sp.solve(sp.Eq(at, eqs.dV), free["C3"])[0]
