@@ -67,30 +67,48 @@ def test_a_part_without_a_stand_in_is_an_error(monkeypatch):
 
 
 PROBE = """
-import sys
-from IPython.core.interactiveshell import InteractiveShell
+import json, sys
 import sympy as sp
-ip = InteractiveShell.instance()
-shown = {"float": 1.5, "list": [1, 2], "expression": sp.Symbol("x") + 1}
-def kinds():
-    return {name: sorted(ip.display_formatter.format(v)[0]) for name, v in shown.items()}
-before = kinds()
-ip.run_cell(sys.argv[1])
-print(before == kinds(), kinds()["float"])
+shell = sys.argv[2] == "shell"
+if shell:
+    from IPython.core.interactiveshell import InteractiveShell
+    ip = InteractiveShell.instance()
+x = sp.Symbol("x")
+shown = {"float": 1.5, "list": [1, 2], "expression": x + 1}
+def state():
+    kinds = {name: sorted(ip.display_formatter.format(v)[0]) for name, v in shown.items()} if shell else {}
+    return {"kinds": kinds, "latex": sp.latex(x / (1 - x)), "hook": repr(sys.displayhook)}
+before = state()
+if shell:
+    ip.run_cell(sys.argv[1])
+else:
+    exec(sys.argv[1])
+print(json.dumps({"before": before, "after": state()}))
 """
+LCAPY = "from handbook.spice import lcapy_checks; _ = lcapy_checks._lcapy()"
 
 
-@pytest.mark.parametrize("how, unchanged", [("import lcapy", False),
-                                            ("from handbook.spice import lcapy_checks; _ = lcapy_checks._lcapy()", True)])
-def test_lcapy_leaves_a_notebooks_display_as_it_was(how, unchanged):
-    """In a notebook's shell, importing lcapy makes every float shown or glued afterwards a LaTeX formula and a PNG
-    (sympy's init_printing, which lcapy calls); the checks' import puts the display back as it was, so a chapter's
-    outputs do not depend on whether an lcapy check ran before in the kernel."""
+@pytest.mark.parametrize("shell", ["shell", "script"])
+@pytest.mark.parametrize("how", ["import lcapy", LCAPY])
+def test_lcapy_leaves_the_display_and_printing_as_they_were(how, shell):
+    """Importing lcapy calls sympy's init_printing: in a notebook's shell every float shown or glued afterwards
+    becomes a LaTeX formula and a PNG, and in any process sympy's terms print in lcapy's order (x/(1 - x) becomes
+    x/(-x + 1)) and, outside a shell, ``sys.displayhook`` is sympy's. The checks' import puts all of it back, so a
+    chapter's outputs do not depend on whether an lcapy check ran before in the kernel."""
+    import json
     import subprocess
     import sys
 
-    out = subprocess.run([sys.executable, "-c", PROBE, how], capture_output=True, text=True, timeout=120)
+    out = subprocess.run([sys.executable, "-c", PROBE, how, shell], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr[-2000:]
-    same, float_kinds = out.stdout.split(maxsplit=1)
-    assert same == str(unchanged), out.stdout
-    assert ("image/png" in float_kinds) is not unchanged
+    got = json.loads(out.stdout.strip().splitlines()[-1])
+    before, after = got["before"], got["after"]
+    assert before["latex"] == r"\frac{x}{1 - x}"
+    if how == LCAPY:
+        assert after == before
+        return
+    assert after["latex"] == r"\frac{x}{- x + 1}"
+    if shell == "shell":
+        assert "image/png" in after["kinds"]["float"] and "image/png" not in before["kinds"]["float"]
+    else:
+        assert after["hook"] != before["hook"]

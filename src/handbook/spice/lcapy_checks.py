@@ -30,7 +30,9 @@ def _lcapy():
     PNG (mathtext, about 50 ms each: a chapter's glued numbers cost seconds and carried images nobody reads), and
     which outlives the chapter in a kernel that runs several: a chapter's outputs depended on whether an lcapy
     check had run before it. IPython's display formatters, sympy's ``Printable`` display methods, sympy's global
-    printer settings and ``sys.displayhook`` are put back as they were."""
+    printer settings and ``sys.displayhook`` are put back as they were; lcapy's own LaTeX display of its containers
+    (``ExprList``, ``ExprDict``), registered with them, goes too (no chapter shows one). An lcapy imported before,
+    other than through here (a reader's own ``import lcapy``), is left with the printing it set up."""
     if "lcapy" in sys.modules:
         return sys.modules["lcapy"]
     from sympy.core._print_helpers import Printable
@@ -199,7 +201,6 @@ def an93008_from_netlist() -> dict:
     from the limiter's parts, against the registry's derivations (an93008.equations eq1().derived with its
     V_cs set to lcapy's V_s - V(cs), eq6().derived). {"eq1": {...}, "eq6": {...}}, each with "lcapy",
     "registry", "same"."""
-
     from ..sources.an93008 import equations as eqs
 
     names = {"V_s": eqs.Vs, "R8": eqs.R8, "R9": eqs.R9, "R10": eqs.R10, "R11": eqs.R11}
@@ -232,7 +233,6 @@ def speed_netlist() -> str:
 def speed_from_netlist() -> dict:
     """AMPIN+ of the speed loop derived by lcapy from its parts, against the registry's derivation of eq 10
     (KCL at AMPIN+). {"lcapy", "registry", "printed", "same", "same_as_printed"}."""
-
     from ..sources.an94002 import equations as eqs
     from . import speed
 
@@ -305,11 +305,12 @@ def timer_from_netlist() -> dict:
     """lcapy's v(t) of :func:`timer_netlist`, set equal to the swing dV after one commutation interval
     t_com = 1 / (6 n N), solved for C, against the registry's derivation of AN94002 eq 5 (charge balance).
     {"lcapy", "registry", "same"}."""
-    lcapy = _lcapy()
     import sympy as sp
 
     from ..sources.an94002 import equations as eqs
     from . import timers
+
+    lcapy = _lcapy()
 
     pin = _nodes(timers.CD_NODES["C3"], 1, named=True)[0]
     v = _circuit(timer_netlist())[pin].V(lcapy.t).expr
