@@ -160,16 +160,17 @@ def compare() -> dict:
     """{"lcapy": its V_cs, "derived": the registry's derivation, "printed": eq 13 as printed,
     "same_as_derived", "same_as_printed", "free_of_loop_gain", "at_parts": (lcapy's V_cs with the netlist's
     part values, an94002.v_cs_trip of the same values)}."""
+    from ..sources import an94002
     from ..sources.an94002 import circuit as note
     from ..sources.an94002 import equations as eqs
     from .limiter import decks as limiters
 
-    held = trip_from_netlist()
+    held, eq13 = trip_from_netlist(), an94002.equation("an94002-eq13")
     q = limiters.opamp_defaults()
     values = {eqs.V_D1: q["zener_voltage"], eqs.R9: q["r9"], eqs.R10: q["r10"], eqs.R11: q["r11"], eqs.R12: q["r12"],
               eqs.R13: q["r13"]}
-    return {"lcapy": held, "derived": eqs.v_cs_at_trip(), "printed": eqs.eq13().printed,
-            "same_as_derived": _same(held, eqs.v_cs_at_trip()), "same_as_printed": _same(held, eqs.eq13().printed),
+    return {"lcapy": held, "derived": eq13.derived, "printed": eq13.printed,
+            "same_as_derived": _same(held, eq13.derived), "same_as_printed": _same(held, eq13.printed),
             "free_of_loop_gain": not any(s.name in ("K", "A") for s in held.free_symbols),
             "at_parts": (float(held.subs(values)),
                          float(note.v_cs_trip(q["zener_voltage"], q["r9"], q["r10"], q["r11"], q["r12"], q["r13"])))}
@@ -201,15 +202,16 @@ def an93008_from_netlist() -> dict:
     from the limiter's parts, against the registry's derivations (an93008.equations eq1().derived with its
     V_cs set to lcapy's V_s - V(cs), eq6().derived). {"eq1": {...}, "eq6": {...}}, each with "lcapy",
     "registry", "same"."""
+    from ..sources import an93008
     from ..sources.an93008 import equations as eqs
 
     names = {"V_s": eqs.Vs, "R8": eqs.R8, "R9": eqs.R9, "R10": eqs.R10, "R11": eqs.R11}
     opened = _circuit(supply_netlist(closed=False))
     v_plus = _to(opened["inp"].V.dc.expr, names)
     v_cs = _to((opened["vs"].V - opened["cs"].V).dc.expr, names)
-    eq1 = eqs.eq1().derived.subs(eqs.Vcs, v_cs)
+    eq1 = an93008.equation("an93008-eq1").derived.subs(eqs.Vcs, v_cs)
     held = _to(_held(supply_netlist(closed=True), "vs", "cs"), names)
-    eq6 = eqs.eq6().derived
+    eq6 = an93008.equation("an93008-eq6").derived
     return {"eq1": {"lcapy": v_plus, "registry": eq1, "same": _same(v_plus, eq1)},
             "eq6": {"lcapy": held, "registry": eq6, "same": _same(held, eq6)}}
 
@@ -233,10 +235,11 @@ def speed_netlist() -> str:
 def speed_from_netlist() -> dict:
     """AMPIN+ of the speed loop derived by lcapy from its parts, against the registry's derivation of eq 10
     (KCL at AMPIN+). {"lcapy", "registry", "printed", "same", "same_as_printed"}."""
+    from ..sources import an94002
     from ..sources.an94002 import equations as eqs
     from . import speed
 
-    e10 = eqs.eq10()
+    e10 = an94002.equation("an94002-eq10")
     names = {"R3": eqs.R3, "R4": eqs.R4, "V_mot": eqs.V_mot}
     ampin = _nodes(speed.NODES["R4"], 1, named=True)[0]  # AMPIN+: R4's top
     node = _to(_circuit(speed_netlist())[ampin].V.dc.expr, names)
@@ -307,6 +310,7 @@ def timer_from_netlist() -> dict:
     {"lcapy", "registry", "same"}."""
     import sympy as sp
 
+    from ..sources import an94002
     from ..sources.an94002 import equations as eqs
     from . import timers
 
@@ -317,5 +321,5 @@ def timer_from_netlist() -> dict:
     free = _names(v)
     at = v.subs(sp.Heaviside(free["t"]), 1).subs({free["t"]: 1 / (6 * eqs.n * eqs.N), free["I_CH"]: eqs.I})
     c_needed = sp.solve(sp.Eq(at, eqs.dV), free["C3"])[0]
-    registry = eqs.eq5().derived
+    registry = an94002.equation("an94002-eq5").derived
     return {"lcapy": c_needed, "registry": registry, "same": _same(c_needed, registry)}

@@ -1,8 +1,6 @@
 """AN94002 equations: each printed form with its derivation from a circuit law, one function per record."""
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 from sympy.physics import units as u
 
@@ -82,7 +80,6 @@ def timer_law(charge, current, time, window):
     return sp.solve(sp.Eq(current * time, charge * window), charge)[0]
 
 
-@functools.cache
 def v_plus():
     """V+ from KCL: R12 from V_s - V_cs, R13 to V_s - V_D1.
 
@@ -94,7 +91,6 @@ def v_plus():
     return sp.solve(sp.Eq((V_s - V_cs - V_p) / R12, (V_p - (V_s - V_D1)) / R13), V_p)[0]
 
 
-@functools.cache
 def v_minus():
     """V- from KCL: R9 + R10 from V_s, R11 to V_s - V_D1.
 
@@ -106,7 +102,6 @@ def v_minus():
     return sp.solve(sp.Eq((V_s - V_m) / (R9 + R10), (V_m - (V_s - V_D1)) / R11), V_m)[0]
 
 
-@functools.cache
 def v_cs_at_trip():
     """Eq 13 derived: V+ = V- solved for V_cs.
 
