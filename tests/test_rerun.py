@@ -20,11 +20,11 @@ import re
 from importlib import import_module
 from pathlib import Path
 
-import papermill as pm
 import pytest
 
 from handbook.core import parameters
 from handbook.core.units import eng
+from handbook.render import execute as execute_notebook
 
 BOOK = Path(__file__).resolve().parents[1] / "book"
 FAN = "[commutation]\npole_pairs = 2\nrpm_min = 1500.0\nrpm_max = 6000.0\n" \
@@ -121,12 +121,10 @@ def rerun(chapter: str, tmp_path_factory) -> Path:
 
 def execute(chapter: str, params: dict, out: Path) -> Path:
     """The chapter executed with ``params`` into ``out`` (papermill), in this process's shared kernel, cleared
-    first; papermill's error when the chapter stops. The notebook is written once, at the end: papermill's default
-    writes (and validates) the whole notebook at every cell's start and end, up to a second of a chapter's run."""
+    first (:func:`handbook.render.execute`); papermill's error when the chapter stops."""
     km = _shared_kernel()
     _fresh(km, (BOOK / chapter).parent)
-    pm.execute_notebook(str(BOOK / f"{chapter}.ipynb"), str(out), parameters=params, kernel_name="python3",
-                        progress_bar=False, km=km, request_save_on_cell_execute=False)
+    execute_notebook(BOOK / f"{chapter}.ipynb", out, params, km=km)
     return out
 
 

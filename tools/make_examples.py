@@ -5,7 +5,8 @@ your_own.ipynb or an example spec; tests/test_examples.py checks the results are
 from pathlib import Path
 
 import nbformat
-import papermill as pm
+
+from handbook.render import execute
 
 ROOT = Path(__file__).resolve().parents[1]
 SOURCE = ROOT / "book" / "design" / "your_own.ipynb"
@@ -24,9 +25,7 @@ def title_of(toml: Path) -> tuple[str, str]:
 def main():
     for toml in sorted((ROOT / "book" / "examples").glob("*.toml")):
         out = toml.with_suffix(".ipynb")
-        pm.execute_notebook(str(SOURCE), str(out), parameters={"spec_file": toml.name}, kernel_name="python3",
-                            cwd=str(toml.parent), progress_bar=False, report_mode=False,
-                            request_save_on_cell_execute=False)
+        execute(SOURCE, out, {"spec_file": toml.name}, cwd=toml.parent)
         nb = nbformat.read(out, as_version=4)
         head, text = title_of(toml)
         nb.cells[0] = nbformat.v4.new_markdown_cell(

@@ -192,6 +192,20 @@ class CannotBeMet(InputError):
     """A re-run design chapter whose parameters are valid but no parts meet (the command exits 3)."""
 
 
+def execute(source: str | Path, out: str | Path, parameters: dict, cwd: str | Path | None = None, **kwargs) -> None:
+    """``source`` executed by papermill with ``parameters`` into ``out``; papermill's error when a cell raises.
+
+    The notebook is written once, at the end (papermill then writes it with the failed cell too): papermill's
+    default writes and validates the whole notebook at every cell's start and end, up to a second of a chapter.
+    ``cwd``: where the kernel starts; ``kwargs`` go to ``papermill.execute_notebook`` (``km``: a kernel already
+    running)."""
+    import papermill as pm
+
+    pm.execute_notebook(str(source), str(out), parameters=parameters, kernel_name="python3",
+                        cwd=None if cwd is None else str(cwd), progress_bar=False, request_save_on_cell_execute=False,
+                        **kwargs)
+
+
 def rerun(chapter: str, pairs: list[tuple[str, str]], out: str | Path | None = None) -> Path:
     """Re-run a chapter with other values, checked first, then render it; returns the page's path.
 
@@ -233,8 +247,7 @@ def rerun(chapter: str, pairs: list[tuple[str, str]], out: str | Path | None = N
     with tempfile.TemporaryDirectory(prefix="handbook-rerun-") as tmp:
         nb = Path(tmp) / f"{path.stem}.ipynb"
         try:
-            pm.execute_notebook(str(path), str(nb), parameters=given, kernel_name="python3", cwd=str(path.parent),
-                                progress_bar=False, request_save_on_cell_execute=False)
+            execute(path, nb, given, cwd=path.parent)
         except pm.PapermillExecutionError as exc:
             why = str(exc.evalue).splitlines()[0] if exc.evalue else exc.ename
             if exc.ename == "Infeasible":  # a valid spec nothing can meet: the design says what can be met
@@ -245,8 +258,6 @@ def rerun(chapter: str, pairs: list[tuple[str, str]], out: str | Path | None = N
 
 def render_spec(spec: str | Path, out: str | Path | None = None) -> Path:
     """Run "Design your own" on ``spec`` with papermill, then render it."""
-    import papermill as pm
-
     from .design import spec as spec_mod
 
     path = Path(spec).resolve()
@@ -256,7 +267,5 @@ def render_spec(spec: str | Path, out: str | Path | None = None) -> Path:
     target.parent.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="handbook-design-") as tmp:
         nb = Path(tmp) / f"{path.stem}.ipynb"
-        pm.execute_notebook(str(root / "book" / "design" / "your_own.ipynb"), str(nb),
-                            parameters={"spec_file": str(path)}, kernel_name="python3",
-                            cwd=str(root / "book" / "design"), progress_bar=False, request_save_on_cell_execute=False)
+        execute(root / "book" / "design" / "your_own.ipynb", nb, {"spec_file": str(path)}, cwd=root / "book" / "design")
         return render(nb, target)
