@@ -113,7 +113,12 @@ def test_every_rating_covers_its_worst_case_stress(case):
     assert table["A3-D1"]["voltage_rating"] * HALF >= 2 * v_hi and table["A3-D1"]["current_rating"] == 3.0
     assert table["A3-L1"]["current_rating"] != cd.spec["i_sat"]  # the design's peak, not the input copied
     assert table["A4-L1"]["current_rating"] > cv.i_peak_max
-    assert table["A3-HS1"]["rating_text"].startswith(f"θ_SA at most {cd.theta_sa_required:.3g} K/W")
+    # the heat sink's largest θ_SA rounded down to three figures (a maximum rounded up would allow a hotter part)
+    shift = 2 - math.floor(math.log10(cd.theta_sa_required))
+    most = math.floor(cd.theta_sa_required * 10 ** shift) / 10 ** shift
+    assert table["A3-HS1"]["rating_text"].startswith(f"θ_SA at most {most:g} K/W") and most <= cd.theta_sa_required
+    # the coils' rating below the LM4651's 10 A limit: the row says a short saturates them on the way
+    assert (table["A3-L1"]["current_rating"] < 10) == ("the coils saturate on the way" in table["A3-L1"]["rating_text"])
     # the technology where the design depends on it: C0G or film for timing, film across the load
     assert table["A1-C3"]["technology"].startswith(("C0G", "polypropylene")) and "film" in table["A3-C1"]["technology"]
     assert any(m in table["A4-L1"]["technology"] for m in ("TDK", "Ferroxcube")) and cv.core_shape in table["A4-L1"]["technology"]

@@ -299,9 +299,8 @@ def class_d_rows(cd) -> list[dict]:
              current=i_sat, stress=i_peak, technology="powder or gapped ferrite core, low-loss at the switching "
              "frequency", package="power inductor",
              rating_text=f"saturation ≥ {eng(i_sat, 'A')} (1.2 × the worst peak {eng(i_peak, 'A')}, audio plus "
-                         f"ripple at clipping; the design held the peak to i_sat = {eng(s['i_sat'], 'A')} over 1.2; "
-                         "a shorted "
-                         f"output reaches the LM4651's 10 A limit first); rms ≥ "
+                         f"ripple at clipping; the design held the peak to i_sat = {eng(s['i_sat'], 'A')} over 1.2); "
+                         + _short_text(i_sat) + "; rms ≥ "
                          f"{eng(i_rms, 'A')} at the thermal basis (the slower corner's audio and the ripple); DCR ≤ "
                          f"{eng(s['l_dcr'] * cd.l_out, 'Ω')}",
              reason=f"{s['l_series']} value; the filter's corner {eng(cd.f_corner, 'Hz')}"),
@@ -314,8 +313,8 @@ def class_d_rows(cd) -> list[dict]:
                          f"coils' ripple, {eng(i_ripple_c, 'A')}), 50 % derating",
              reason=f"{s['c_series']} value; across the load"),
         _flyback_diodes(sheet, v_c, rail_text, i_peak, float(fig["dead_time"]) * cd.f_sw_max),
-        _row(sheet, "HS1", "LM4652 heat sink", f"≤ {cd.theta_sa_required:.3g} K/W", "K/W",
-             rating_text=f"θ_SA at most {cd.theta_sa_required:.3g} K/W: the LM4652 dissipating {eng(p_set, 'W')} at "
+        _row(sheet, "HS1", "LM4652 heat sink", f"≤ {_down(cd.theta_sa_required)} K/W", "K/W",
+             rating_text=f"θ_SA at most {_down(cd.theta_sa_required)} K/W: the LM4652 dissipating {eng(p_set, 'W')} at "
                          f"the oscillator corner that sets it, T_j {model.DEV['tj_max'] - s['tj_margin']:g} °C, "
                          f"{t_a:g} °C ambient" + ("" if s["theta_sa_available"] is None else
                                                   f"; the {s['theta_sa_available']:g} K/W given holds T_j at "
@@ -324,6 +323,24 @@ def class_d_rows(cd) -> list[dict]:
              f"{s['theta_cs']:g} K/W)", package="TO-220 mount",
              reason=f"sized at {cd.thermal_basis}: {eng(cd.p_thermal, 'W')} of output"),
     ]
+
+
+def _down(value: float) -> str:
+    """A largest allowed value to three significant figures, rounded down (22.75 K/W is written 22.7, not 22.8)."""
+    step = 10.0 ** (math.floor(math.log10(value)) - 2)
+    return f"{math.floor(value / step * (1 + 1e-12)) * step:.3g}"
+
+
+def _short_text(i_sat: float) -> str:
+    """What a shorted output does to coils rated ``i_sat`` (A): the LM4651 turns every MOSFET off at its current
+    limit (10 A at least: the datasheet's SCKT pin), which a coil of a lower rating reaches saturated."""
+    from ..sources.lm4651 import circuit as lm4651
+
+    limit = eng(lm4651.I_LIMIT, "A")
+    if i_sat >= lm4651.I_LIMIT:
+        return f"a shorted output reaches the LM4651's {limit} limit (every MOSFET off) before the coils saturate"
+    return (f"a shorted output is turned off at the LM4651's {limit} limit, above this rating: the coils saturate on "
+            f"the way (softly in a powder core); coils rated {limit} or more stay out of saturation")
 
 
 def converter_rows(cv) -> list[dict]:
