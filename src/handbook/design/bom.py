@@ -165,7 +165,7 @@ def limiter_rows(lim) -> list[dict]:
     for n, role in ((9, "trip reference"), (10, "reference divider"), (11, "reference divider"),
                     (12, "level shift"), (13, "level shift")):
         value = getattr(lim, f"r{n}")
-        rows.append(_resistor(sheet, f"R{n}", f"{role} resistor", value, t, s[f"r{n}_series"],
+        rows.append(_resistor(sheet, f"R{n}", f"{role} resistor", value, _bought(t, s["temp_span"]), s[f"r{n}_series"],
                               current[n] ** 2 * value * (1 + t), t_a, "network of the largest worst margin with this R7"
                               + (" (pinned by the spec)" if s[f"r{n}"] is not None else ""),
                               technology="thin or metal film, one type for R9..R13",
@@ -191,15 +191,28 @@ def limiter_rows(lim) -> list[dict]:
 DIVIDER_TC = ratings.DIVIDER_TC
 
 
+#: resistor tolerance classes a distributor stocks, fractions
+TOLERANCE_CLASSES = (0.0005, 0.001, 0.0025, 0.005, 0.01, 0.02, 0.05)
+
+
+def _bought(tolerance: float, span: float) -> float:
+    """The tolerance class R9..R13 are bought in: the largest stocked class within what the design's ``tolerance``
+    (initial tolerance and drift together) leaves after :data:`DIVIDER_TC`'s drift over ``span`` (K); the design's
+    own tolerance where no class fits (the tempco text then asks for a tracking network)."""
+    room = tolerance - DIVIDER_TC * span
+    return max((c for c in TOLERANCE_CLASSES if c <= room * (1 + 1e-9)), default=tolerance)
+
+
 def _drift_budget(tolerance: float, span: float) -> str:
     """What R9..R13 must be bought as: the design's ``tolerance`` holds initial tolerance plus drift over the
-    temperature span, so the initial tolerance may be only what :data:`DIVIDER_TC` leaves of it."""
+    temperature span, so the initial tolerance may be only what :data:`DIVIDER_TC` leaves of it, and the class
+    bought (:func:`_bought`) is the stocked one within that."""
     drift = DIVIDER_TC * span
-    if drift >= tolerance:
-        return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K drifts {drift:.2%} over ±{span:g} K, more than the design's ±{tolerance:.2%}: "
-                "a tracking network, or a larger resistor_tolerance")
-    return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K and initial ±{tolerance - drift:.2%} or better: the design's ±{tolerance:.2%} "
-            f"holds both over ±{span:g} K")
+    if drift >= tolerance or _bought(tolerance, span) == tolerance and drift > 0:
+        return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K drifts {drift:.2%} over ±{span:g} K, leaving no stocked tolerance class "
+                f"inside the design's ±{tolerance:.2%}: a tracking network, or a larger resistor_tolerance")
+    return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K, bought ±{_bought(tolerance, span):.2%}: the design's ±{tolerance:.2%} holds the "
+            f"initial tolerance (±{tolerance - drift:.2%} at most) and the drift over ±{span:g} K")
 
 
 def _zener_name(v: float) -> str:
@@ -318,7 +331,7 @@ def class_d_rows(cd) -> list[dict]:
                          f"the oscillator corner that sets it, T_j {model.DEV['tj_max'] - s['tj_margin']:g} °C, "
                          f"{t_a:g} °C ambient" + ("" if s["theta_sa_available"] is None else
                                                   f"; the {s['theta_sa_available']:g} K/W given holds T_j at "
-                                                  f"{cd.t_junction:.4g} °C"),
+                                                  f"{cd.t_junction:.4g} °C") + _full_power_text(cd),
              stress=cd.p_dissipation, technology="extruded aluminium, with thermal grease (θ_CS "
              f"{s['theta_cs']:g} K/W)", package="TO-220 mount",
              reason=f"sized at {cd.thermal_basis}: {eng(cd.p_thermal, 'W')} of output"),
@@ -341,6 +354,27 @@ def _short_text(i_sat: float) -> str:
         return f"a shorted output reaches the LM4651's {limit} limit (every MOSFET off) before the coils saturate"
     return (f"a shorted output is turned off at the LM4651's {limit} limit, above this rating: the coils saturate on "
             f"the way (softly in a powder core); coils rated {limit} or more stay out of saturation")
+
+
+def _full_power_text(cd) -> str:
+    """For a heat sink sized at 1/8 of the clipping power: what a continuous sine at the clipping power (a bench
+    test at full power) asks of it, and what the heat sink given (if any) then holds T_j at; empty otherwise."""
+    from .class_d import model
+    from .common import checked_table
+
+    s = cd.spec
+    if s["thermal_basis"] != "iec_1_8":
+        return ""
+    full = checked_table("class_d", {**dict(s), "thermal_basis": "continuous_sine", "p_continuous": None})
+    need, t_j, _, _ = (float(x) for x in model.thermal(full, cd.f_sw_min, cd.f_sw_max))
+    text = (f"; a continuous sine at the clipping power (a bench test at full power) needs ≤ {_down(need)} K/W"
+            if need > 0 else "; no heat sink carries a continuous sine at the clipping power (a bench test at full "
+            "power): the LM4652 shuts down")
+    if s["theta_sa_available"] is not None:
+        limit = model.DEV["tj_max"]
+        text += (f", where the {s['theta_sa_available']:g} K/W given holds T_j at {t_j:.4g} °C" if t_j <= limit else
+                 f", where the {s['theta_sa_available']:g} K/W given passes {limit:g} °C: the LM4652 shuts down")
+    return text
 
 
 def converter_rows(cv) -> list[dict]:

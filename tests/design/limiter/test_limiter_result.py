@@ -113,7 +113,12 @@ def test_the_supply_is_held_to_the_ic_and_feeds_the_zener():
     assert r.r14 == 300.0 and 300.0 <= largest < 330.0  # E24: 300 is the largest at or below it
     assert r.i_zener_min == pytest.approx((10.8 - vz_high) / (300 * 1.01) - r.divider_current) and r.i_zener_min >= 5e-3
     i_max = (13.2 - vz_low) / (300 * 0.99)
-    assert r.p_r14 == pytest.approx(i_max ** 2 * 297) and r.p_zener == pytest.approx(vz_high * i_max)
+    assert r.p_r14 == pytest.approx(i_max ** 2 * 297)
+    # D1 at 13.2 V through R14 at 297 ohm, over its whole range (a grid, no formula of the design's): above
+    # V_s / 2 = 6.6 V its V_z (13.2 - V_z) / 297 falls as V_z rises, so the most is at its lowest, 7.535 V: 143.7 mW
+    grid = [vz_low + (vz_high - vz_low) * k / 1000 for k in range(1001)]
+    assert r.p_zener == pytest.approx(max(v * (13.2 - v) / 297 for v in grid), rel=1e-12)
+    assert r.p_zener == pytest.approx(0.1437, abs=1e-4)
     assert not r.warnings
 
 

@@ -244,17 +244,20 @@ def zener_feed(s: dict, i_divider: float) -> dict:
     -------
     dict
         ``r14`` (ohm, the ``r14_series`` value at or below the largest that works at ``resistor_tolerance``),
-        ``p_r14`` (W), ``i_zener_min`` (A) and ``p_zener`` (W, all of R14's current in D1: the dividers at their
-        least may draw almost nothing).
+        ``p_r14`` (W), ``i_zener_min`` (A) and ``p_zener`` (W, at the zener voltage of D1's range that
+        dissipates most, all of R14's current in D1: the dividers at their least may draw almost nothing).
     """
     vz_low, vz_high = net.zener_range(s)
     t = s["resistor_tolerance"]
     largest = (s["v_supply_min"] - vz_high) / (s["zener_test_current"] + i_divider) / (1 + t)
     r14 = series.at_most(s["r14_series"], largest)
     i_max = (s["v_supply_max"] - vz_low) / (r14 * (1 - t))
+    # D1 takes V_z (V_supply - V_z) / R14: largest at V_z = V_supply / 2, else at the end of D1's range nearer it
+    # (one zener voltage for both factors: its highest with R14's current at its lowest is no corner)
+    vz = min(max(s["v_supply_max"] / 2, vz_low), vz_high)
     return {"r14": r14, "p_r14": i_max ** 2 * r14 * (1 - t),
             "i_zener_min": (s["v_supply_min"] - vz_high) / (r14 * (1 + t)) - i_divider,
-            "p_zener": vz_high * i_max}
+            "p_zener": vz * (s["v_supply_max"] - vz) / (r14 * (1 - t))}
 
 
 def warnings(r: dict, s: dict) -> list[str]:
