@@ -162,11 +162,17 @@ def test_the_heat_sink_row_gives_the_full_power_bench_test_too():
     from pathlib import Path
 
     example = Path(__file__).resolve().parents[2] / "book" / "examples" / "amplifier_8ohm.toml"
-    hs = {r["designator"]: r for r in bom.rows(spec.run(spec.load(example)))}["A3-HS1"]
+    rows = {r["designator"]: r for r in bom.rows(spec.run(spec.load(example)))}
+    hs = rows["A3-HS1"]
     assert hs["value_text"] == "≤ 22.7 K/W"  # 22.75 K/W, rounded down
     need = float(re.search(r"full power\) needs ≤ ([\d.]+) K/W", hs["rating_text"]).group(1))
-    t_j = float(re.search(r"4 K/W given holds T_j at ([\d.]+) °C$", hs["rating_text"]).group(1))
+    t_j = float(re.search(r"4 K/W given holds T_j at ([\d.]+) °C there$", hs["rating_text"]).group(1))
     assert need == pytest.approx(5.1, abs=0.1) and t_j == pytest.approx(123, abs=1.5)
+    # its coils: 1.2 x the worst peak, 4.924 A by the same review's hand (audio at clipping, the capacitor's current
+    # and half the ripple), so 5.91 A, below the LM4651's 10 A: a short saturates them before the limit acts
+    coil = rows["A3-L1 A3-L2"]
+    assert coil["current_rating"] == pytest.approx(1.2 * 4.924, rel=1e-3)
+    assert "the coils saturate on the way" in coil["rating_text"] and "coils rated 12 A or more" in coil["rating_text"]
 
 
 def test_a_hot_board_needs_a_larger_rating():

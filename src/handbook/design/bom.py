@@ -3,7 +3,8 @@
 One sheet per design, its designators prefixed with the sheet (:data:`SHEETS`: ``A2-R7`` is R7 of the current
 limiter), so the four circuits' parts never collide; within a sheet the source's own designators where it
 names the part (AN94002's C3, R7, R14, D1, IC1), else numbered on that sheet. Each row holds the value with
-its unit, the tolerance the design assumed, the rating it needs under :mod:`handbook.design.ratings`'
+its unit, its tolerance (the design's, or for R9..R13 the stocked class that leaves room for their drift), the
+rating it needs under :mod:`handbook.design.ratings`'
 convention (stated in the row), the technology or dielectric where the design depends on it, a package class
 that carries the rating (never a part number that was not read from a catalogue: magnetics name the core and
 material of PyOpenMagnetics' database), the temperature coefficient where the design's corners depend on it,
@@ -165,7 +166,7 @@ def limiter_rows(lim) -> list[dict]:
     for n, role in ((9, "trip reference"), (10, "reference divider"), (11, "reference divider"),
                     (12, "level shift"), (13, "level shift")):
         value = getattr(lim, f"r{n}")
-        rows.append(_resistor(sheet, f"R{n}", f"{role} resistor", value, _bought(t, s["temp_span"]), s[f"r{n}_series"],
+        rows.append(_resistor(sheet, f"R{n}", f"{role} resistor", value, _bought(t, s["temp_span"]) or t, s[f"r{n}_series"],
                               current[n] ** 2 * value * (1 + t), t_a, "network of the largest worst margin with this R7"
                               + (" (pinned by the spec)" if s[f"r{n}"] is not None else ""),
                               technology="thin or metal film, one type for R9..R13",
@@ -195,24 +196,23 @@ DIVIDER_TC = ratings.DIVIDER_TC
 TOLERANCE_CLASSES = (0.0005, 0.001, 0.0025, 0.005, 0.01, 0.02, 0.05)
 
 
-def _bought(tolerance: float, span: float) -> float:
+def _bought(tolerance: float, span: float) -> float | None:
     """The tolerance class R9..R13 are bought in: the largest stocked class within what the design's ``tolerance``
-    (initial tolerance and drift together) leaves after :data:`DIVIDER_TC`'s drift over ``span`` (K); the design's
-    own tolerance where no class fits (the tempco text then asks for a tracking network)."""
+    (initial tolerance and drift together) leaves after :data:`DIVIDER_TC`'s drift over ``span`` (K); None where no
+    stocked class fits."""
     room = tolerance - DIVIDER_TC * span
-    return max((c for c in TOLERANCE_CLASSES if c <= room * (1 + 1e-9)), default=tolerance)
+    return max((c for c in TOLERANCE_CLASSES if c <= room * (1 + 1e-9)), default=None)
 
 
 def _drift_budget(tolerance: float, span: float) -> str:
     """What R9..R13 must be bought as: the design's ``tolerance`` holds initial tolerance plus drift over the
-    temperature span, so the initial tolerance may be only what :data:`DIVIDER_TC` leaves of it, and the class
-    bought (:func:`_bought`) is the stocked one within that."""
-    drift = DIVIDER_TC * span
-    if drift >= tolerance or _bought(tolerance, span) == tolerance and drift > 0:
+    temperature span, so the class bought (:func:`_bought`) plus :data:`DIVIDER_TC`'s drift must stay inside it."""
+    drift, bought = DIVIDER_TC * span, _bought(tolerance, span)
+    if bought is None:
         return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K drifts {drift:.2%} over ±{span:g} K, leaving no stocked tolerance class "
                 f"inside the design's ±{tolerance:.2%}: a tracking network, or a larger resistor_tolerance")
-    return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K, bought ±{_bought(tolerance, span):.2%}: the design's ±{tolerance:.2%} holds the "
-            f"initial tolerance (±{tolerance - drift:.2%} at most) and the drift over ±{span:g} K")
+    return (f"≤ {DIVIDER_TC * 1e6:g} ppm/K, bought ±{bought:.2%}: with {drift:.2%} of drift over ±{span:g} K that is "
+            f"±{bought + drift:.2%}, inside the design's ±{tolerance:.2%}")
 
 
 def _zener_name(v: float) -> str:
@@ -340,25 +340,31 @@ def class_d_rows(cd) -> list[dict]:
 
 def _down(value: float) -> str:
     """A largest allowed value to three significant figures, rounded down (22.75 K/W is written 22.7, not 22.8)."""
+    if value <= 0:
+        return f"{value:.3g}"
     step = 10.0 ** (math.floor(math.log10(value)) - 2)
     return f"{math.floor(value / step * (1 + 1e-12)) * step:.3g}"
 
 
 def _short_text(i_sat: float) -> str:
     """What a shorted output does to coils rated ``i_sat`` (A): the LM4651 turns every MOSFET off at its current
-    limit (10 A at least: the datasheet's SCKT pin), which a coil of a lower rating reaches saturated."""
+    limit, 10 A at its minimum setting (the datasheet's SCKT pin; it gives no upper bound), which coils of a lower
+    rating reach saturated; the book's saturation margin asks 1.2 x that limit to keep them clear of it."""
     from ..sources.lm4651 import circuit as lm4651
 
-    limit = eng(lm4651.I_LIMIT, "A")
-    if i_sat >= lm4651.I_LIMIT:
-        return f"a shorted output reaches the LM4651's {limit} limit (every MOSFET off) before the coils saturate"
-    return (f"a shorted output is turned off at the LM4651's {limit} limit, above this rating: the coils saturate on "
-            f"the way (softly in a powder core); coils rated {limit} or more stay out of saturation")
+    limit, clear = eng(lm4651.I_LIMIT, "A"), ratings.SATURATION_MARGIN * lm4651.I_LIMIT
+    if i_sat >= clear:
+        return (f"a shorted output reaches the LM4651's current limit ({limit} at its minimum setting, every MOSFET "
+                f"off) with the coils' saturation margin, {ratings.SATURATION_MARGIN:g} ×, kept")
+    where = ("above this rating: the coils saturate on the way (softly in a powder core)" if i_sat < lm4651.I_LIMIT
+             else "inside the coils' saturation margin")
+    return (f"a shorted output is turned off at the LM4651's current limit ({limit} at its minimum setting), {where}; "
+            f"coils rated {eng(clear, 'A')} or more ({ratings.SATURATION_MARGIN:g} × the limit) keep clear of it")
 
 
 def _full_power_text(cd) -> str:
     """For a heat sink sized at 1/8 of the clipping power: what a continuous sine at the clipping power (a bench
-    test at full power) asks of it, and what the heat sink given (if any) then holds T_j at; empty otherwise."""
+    test at full power) asks of it, and the T_j the heat sink given (if any) then reaches; empty otherwise."""
     from .class_d import model
     from .common import checked_table
 
@@ -367,13 +373,13 @@ def _full_power_text(cd) -> str:
         return ""
     full = checked_table("class_d", {**dict(s), "thermal_basis": "continuous_sine", "p_continuous": None})
     need, t_j, _, _ = (float(x) for x in model.thermal(full, cd.f_sw_min, cd.f_sw_max))
-    text = (f"; a continuous sine at the clipping power (a bench test at full power) needs ≤ {_down(need)} K/W"
-            if need > 0 else "; no heat sink carries a continuous sine at the clipping power (a bench test at full "
-            "power): the LM4652 shuts down")
+    target, shutdown = model.DEV["tj_max"] - s["tj_margin"], model.DEV["tj_max"]
+    text = "; a continuous sine at the clipping power (a bench test at full power) " + (
+        f"needs ≤ {_down(need)} K/W" if need > 0 else f"leaves no heat sink that holds T_j at {target:g} °C")
     if s["theta_sa_available"] is not None:
-        limit = model.DEV["tj_max"]
-        text += (f", where the {s['theta_sa_available']:g} K/W given holds T_j at {t_j:.4g} °C" if t_j <= limit else
-                 f", where the {s['theta_sa_available']:g} K/W given passes {limit:g} °C: the LM4652 shuts down")
+        given = s["theta_sa_available"]
+        text += (f"; the {given:g} K/W given holds T_j at {t_j:.4g} °C there" if t_j <= shutdown else
+                 f"; with the {given:g} K/W given T_j passes {shutdown:g} °C there: the LM4652's thermal shutdown trips")
     return text
 
 

@@ -124,8 +124,9 @@ def drift(s: dict) -> tuple[str, ...]:
         f"datasheet, +0.08 %/K max; AN94002 2.4's span), +-{tc * span / vz:.2%} of V_Z: inside the analysis, each "
         "board at both ends of the span.",
         f"R9..R13 at {DIVIDER_TC * 1e6:g} ppm/K (the BOM's thin-film class) drift {DIVIDER_TC * span:.2%} over "
-        f"+-{span:g} K, inside resistor_tolerance = {s['resistor_tolerance']:.2%} when bought at the BOM's initial "
-        "tolerance; they share one type, so their drift largely cancels in the divider ratios.",
+        f"+-{span:g} K, inside resistor_tolerance = {s['resistor_tolerance']:.2%} when bought in the BOM's tolerance "
+        "class (a tracking network where no stocked class leaves room); they share one type, so their drift largely "
+        "cancels in the divider ratios.",
         "R7 (<= 100 ppm/K, the BOM's current-sense class) warms while it holds a stalled motor: about 1 % of the "
         "trip current, outside the analysis and covered by min_margin "
         f"= {s['min_margin']:.0%} (the schema's meaning of min_margin).",

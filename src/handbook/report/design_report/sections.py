@@ -252,7 +252,7 @@ def _least(t: str, result) -> str:
 
 def losses_section(ctx) -> str:
     """Section 6: losses, temperatures and thermal ratings of each design (R7 in a stall, the LM4652 at its
-    thermal basis, the coil), the ambient each is taken at, then the whole BOM."""
+    thermal basis, the converter's coil), the ambient each is taken at, then the BOM."""
     out = []
     for t, result in ctx.designed.items():
         out.append(f"<h3>{esc(title(t))}</h3>")
