@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from matplotlib.ticker import EngFormatter
 
-from handbook.core.units import eng, prefixed
+from handbook.core.units import eng, prefixed, to_figures
 
 
 @pytest.mark.parametrize("value,unit,text", [
@@ -18,6 +18,17 @@ def test_by_hand(value, unit, text):
 
 def test_digits_are_significant_figures():
     assert eng(1.23456e-6, "A", digits=3) == "1.23 µA" and eng(1.23456e-6, "A", digits=6) == "1.23456 µA"
+
+
+def test_to_figures_rounds_one_way():
+    """A limit kept on its safe side: 0.123456 A to four figures is 0.1234 down and 0.1235 up; 98765 Hz is 98760
+    down and 98770 up."""
+    import math
+
+    assert to_figures(0.123456, math.floor) == pytest.approx(0.1234, rel=1e-12)
+    assert to_figures(0.123456, math.ceil) == pytest.approx(0.1235, rel=1e-12)
+    assert to_figures(98765.0, math.floor) == pytest.approx(98760.0) and to_figures(98765.0, math.ceil) == pytest.approx(98770.0)
+    assert to_figures(22.75, math.floor, 3) == pytest.approx(22.7)
 
 
 def test_same_text_as_matplotlibs_formatter():

@@ -40,6 +40,28 @@ def prefixed(value: float, unit: str) -> str:
     return f"{mantissa:g}{suffix}".replace("-", "\N{MINUS SIGN}")
 
 
+def to_figures(x: float, rounding, figures: int = 4) -> float:
+    """``x`` to ``figures`` significant figures, rounded one way: a limit stated so that it still holds (a largest
+    allowed value rounded down, a least one up).
+
+    Parameters
+    ----------
+    x : float
+        The value (not zero).
+    rounding : callable
+        ``math.floor`` or ``math.ceil``.
+    figures : int
+        Significant figures kept.
+
+    Returns
+    -------
+    float
+        The rounded value.
+    """
+    scale = 10.0 ** (math.floor(math.log10(abs(x))) - figures + 1)
+    return rounding(x / scale) * scale
+
+
 def signed_percent(fraction: float, places: int = 2) -> str:
     """A signed share as the book writes it: "+1.21 %", "−0.78 %" (a minus sign, a space before %).
 

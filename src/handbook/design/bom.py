@@ -18,7 +18,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from ..core.units import eng
+from ..core.units import eng, to_figures
 from . import ratings
 
 #: design table -> (sheet prefix, the circuit)
@@ -163,14 +163,15 @@ def limiter_rows(lim) -> list[dict]:
     t = s["resistor_tolerance"]
     current = {9: vz_high / ((lim.r9 + lim.r10 + lim.r11) * (1 - t)), 12: vz_high / ((lim.r12 + lim.r13) * (1 - t))}
     current.update({10: current[9], 11: current[9], 13: current[12]})  # each divider's string carries one current
+    bought, budget = _bought(t, s["temp_span"]) or t, _drift_budget(t, s["temp_span"])  # one class for R9..R13
     for n, role in ((9, "trip reference"), (10, "reference divider"), (11, "reference divider"),
                     (12, "level shift"), (13, "level shift")):
         value = getattr(lim, f"r{n}")
-        rows.append(_resistor(sheet, f"R{n}", f"{role} resistor", value, _bought(t, s["temp_span"]) or t, s[f"r{n}_series"],
+        rows.append(_resistor(sheet, f"R{n}", f"{role} resistor", value, bought, s[f"r{n}_series"],
                               current[n] ** 2 * value * (1 + t), t_a, "network of the largest worst margin with this R7"
                               + (" (pinned by the spec)" if s[f"r{n}"] is not None else ""),
                               technology="thin or metal film, one type for R9..R13",
-                              tempco=_drift_budget(t, s["temp_span"])))
+                              tempco=budget))
     if lim.r14 is not None:
         rows.append(_resistor(sheet, "R14", "zener feed resistor", lim.r14, s["resistor_tolerance"], s["r14_series"],
                               lim.p_r14, t_a, f"feeds D1 its {eng(s['zener_test_current'], 'A')} test current plus "
@@ -288,6 +289,7 @@ def class_d_rows(cd) -> list[dict]:
     pin = PIN_VOLTAGE ** 2  # R_OSC and R_DLY each carry at most PIN_VOLTAGE
     i_rms, i_audio_c, i_ripple_c = _filter_currents(cd)
     i_c1 = math.hypot(i_audio_c, i_ripple_c)
+    theta_most = _down(cd.theta_sa_required)
     supply_text = (f"supply V+ + V− {lm4651.SUPPLY_TOTAL[0]:g} V to {lm4651.SUPPLY_TOTAL[1]:g} V, T_A −40 °C to +85 °C (LM4651/"
                    f"LM4652 operating ratings): {rail_text} is {v_c:.4g} V, at {t_a:g} °C ambient")
     return [
@@ -326,8 +328,8 @@ def class_d_rows(cd) -> list[dict]:
                          f"coils' ripple, {eng(i_ripple_c, 'A')}), 50 % derating",
              reason=f"{s['c_series']} value; across the load"),
         _flyback_diodes(sheet, v_c, rail_text, i_peak, float(fig["dead_time"]) * cd.f_sw_max),
-        _row(sheet, "HS1", "LM4652 heat sink", f"≤ {_down(cd.theta_sa_required)} K/W", "K/W",
-             rating_text=f"θ_SA at most {_down(cd.theta_sa_required)} K/W: the LM4652 dissipating {eng(p_set, 'W')} at "
+        _row(sheet, "HS1", "LM4652 heat sink", f"≤ {theta_most} K/W", "K/W",
+             rating_text=f"θ_SA at most {theta_most} K/W: the LM4652 dissipating {eng(p_set, 'W')} at "
                          f"the oscillator corner that sets it, T_j {model.DEV['tj_max'] - s['tj_margin']:g} °C, "
                          f"{t_a:g} °C ambient" + ("" if s["theta_sa_available"] is None else
                                                   f"; the {s['theta_sa_available']:g} K/W given holds T_j at "
@@ -339,11 +341,9 @@ def class_d_rows(cd) -> list[dict]:
 
 
 def _down(value: float) -> str:
-    """A largest allowed value to three significant figures, rounded down (22.75 K/W is written 22.7, not 22.8)."""
-    if value <= 0:
-        return f"{value:.3g}"
-    step = 10.0 ** (math.floor(math.log10(value)) - 2)
-    return f"{math.floor(value / step * (1 + 1e-12)) * step:.3g}"
+    """A largest allowed value to three significant figures, rounded down (22.75 K/W is written 22.7, not 22.8; a
+    value already of three figures, 22.7, stays itself however its binary form falls)."""
+    return f"{value:.3g}" if value <= 0 else f"{to_figures(value * (1 + 1e-12), math.floor, 3):.3g}"
 
 
 def _short_text(i_sat: float) -> str:

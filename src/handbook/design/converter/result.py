@@ -51,7 +51,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ...core import InputError
-from ...core.units import eng
+from ...core.units import eng, to_figures
 from ...sources.tca5600 import data as tca5600_data
 from ..common import Result, Table, checked_table, completed, is_checked, ordered, reported
 from ..solvers import Infeasible
@@ -249,12 +249,6 @@ def _frequency_that_works(s: dict) -> float | None:
     return _bisect(pred, good, bad)
 
 
-def _to_figures(x: float, rounding, figures: int = 4) -> float:
-    """``x`` to ``figures`` significant figures, rounded by ``rounding`` (math.floor or math.ceil)."""
-    scale = 10.0 ** (math.floor(math.log10(abs(x))) - figures + 1)
-    return rounding(x / scale) * scale
-
-
 def infeasible(s: dict, every: list[Coil]) -> Infeasible:
     """Nothing in the candidate set meets the spec: what would (a lower current, a higher frequency),
     and which candidate comes nearest (the way to a larger core family).
@@ -286,8 +280,8 @@ def infeasible(s: dict, every: list[Coil]) -> Infeasible:
              f"{s['saturation_margin_min']:.0%} saturation margin within {s['temperature_rise_max']:g} K: "
              f"the largest, {largest.shape} in {largest.material}, fails: {why}"]
     # shown to four figures, rounded the safe way (a current down, a frequency up), so a value copied back works
-    i_ok = _to_figures(i_ok, math.floor) if i_ok is not None else None
-    f_ok = _to_figures(f_ok, math.ceil) if f_ok is not None else None
+    i_ok = to_figures(i_ok, math.floor) if i_ok is not None else None
+    f_ok = to_figures(f_ok, math.ceil) if f_ok is not None else None
     if i_ok is not None:
         parts.append(f"i_out up to {eng(i_ok, 'A')} can be met at f_min = {eng(s['f_min'], 'Hz')}")
     if f_ok is not None:
